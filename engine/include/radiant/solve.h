@@ -1,0 +1,63 @@
+// The engine's one entry point: solve a scene, with progress and cancellation.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "radiant/result.h"
+#include "radiant/scene.h"
+
+namespace radiant {
+
+struct SolveOptions {
+    double tolerance = 0.01;            ///< relative error target; also sets the patch size
+    std::optional<double> max_seconds;  ///< wall-clock budget; the best result so far is returned
+    std::string method = "auto";        ///< auto, direct, jacobi, gauss-seidel, shooting
+    int threads = 0;                    ///< 0: all cores
+    std::uint64_t seed = 1;             ///< sampling seed; results do not depend on `threads`
+    bool want_mesh = false;             ///< fill Result::mesh
+};
+
+/// Options from a scene's own `settings`; command-line flags override fields afterwards.
+SolveOptions options_from(const Settings& settings);
+
+/// The solver names `method` accepts.
+const std::vector<std::string>& solver_names();
+
+/// Cooperative cancellation; `cancel()` may be called from any thread.
+class CancellationToken {
+public:
+    void cancel() noexcept { cancelled_.store(true, std::memory_order_relaxed); }
+    bool cancelled() const noexcept { return cancelled_.load(std::memory_order_relaxed); }
+
+private:
+    std::atomic<bool> cancelled_{false};
+};
+
+struct Progress {
+    std::string stage;  ///< "meshing", "form factors", "solving", "sensors"
+    double fraction = 0;  ///< rough completion of the whole solve in [0, 1]
+    std::size_t iterations = 0;
+    double unshot_fraction = 0;
+    double error_estimate = 0;
+    double elapsed_seconds = 0;
+    std::uint64_t rays = 0;
+};
+
+/// Receives progress from the solving thread (or a worker thread). Implementations must be
+/// cheap and thread-safe; they must not throw.
+class SolveObserver {
+public:
+    virtual ~SolveObserver() = default;
+    virtual void on_progress(const Progress& progress) = 0;
+};
+
+/// Solves `scene`. Never throws for bad input: a scene that fails `check_scene` gives a result
+/// with status `failed` and the problems in `error`. Thread-safe for distinct calls.
+Result solve(const Scene& scene, const SolveOptions& options, SolveObserver* observer = nullptr,
+             const CancellationToken* cancel = nullptr);
+
+}  // namespace radiant
