@@ -1,0 +1,76 @@
+#include "formfactor/receiver_rule.h"
+
+#include <algorithm>
+
+#include <tbb/parallel_for.h>
+
+namespace radiant {
+namespace {
+
+// Points of a rule of `degree` with positive weights only (some triangle rules of degree 3 have
+// a negative weight, which could make a form factor negative).
+std::vector<QuadraturePoint> positive_rule(const std::vector<Vec3>& polygon, int degree) {
+    for (int d = degree; d <= 5; ++d) {
+        auto rule = polygon_quadrature(polygon, d);
+        if (std::all_of(rule.begin(), rule.end(), [](const QuadraturePoint& q) { return q.weight > 0; })) {
+            return rule;
+        }
+    }
+    return polygon_quadrature(polygon, 1);
+}
+
+// Distance from patch i to the nearest patch it can exchange light with, relative to its size.
+double nearness(const PatchMesh& patches, std::size_t i) {
+    const PatchGeometry& p = patches.patch(i);
+    double nearest = 1e300;
+    for (std::size_t j = 0; j < patches.size(); ++j) {
+        if (j == i) continue;
+        const PatchGeometry& q = patches.patch(j);
+        if (dot(q.centroid - p.centroid, p.normal) <= 1e-9 * p.diameter_m &&
+            dot(p.centroid - q.centroid, q.normal) <= 1e-9 * p.diameter_m) {
+            continue;
+        }
+        const double d = length(q.centroid - p.centroid) - 0.5 * q.diameter_m;
+        nearest = std::min(nearest, std::max(d, 1e-300));
+    }
+    return p.diameter_m / nearest;
+}
+
+}  // namespace
+
+std::vector<std::vector<Vec3>> split_in_four(const std::vector<Vec3>& v) {
+    if (v.size() == 4) {
+        const Vec3 c = (v[0] + v[1] + v[2] + v[3]) * 0.25;
+        const Vec3 m01 = (v[0] + v[1]) * 0.5, m12 = (v[1] + v[2]) * 0.5;
+        const Vec3 m23 = (v[2] + v[3]) * 0.5, m30 = (v[3] + v[0]) * 0.5;
+        return {{v[0], m01, c, m30}, {m01, v[1], m12, c}, {c, m12, v[2], m23}, {m30, c, m23, v[3]}};
+    }
+    if (v.size() == 3) {
+        const Vec3 a = (v[0] + v[1]) * 0.5, b = (v[1] + v[2]) * 0.5, c = (v[2] + v[0]) * 0.5;
+        return {{v[0], a, c}, {a, v[1], b}, {c, b, v[2]}, {a, b, c}};
+    }
+    const Vec3 c = polygon_centroid(v);
+    std::vector<std::vector<Vec3>> out;
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back({c, v[i], v[(i + 1) % v.size()]});
+    return out;
+}
+
+std::vector<std::vector<QuadraturePoint>> receiver_rules(const PatchMesh& patches) {
+    std::vector<std::vector<QuadraturePoint>> rules(patches.size());
+    tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t i) {
+        const auto& poly = patches.patch(i).vertices;
+        const double ratio = nearness(patches, i);
+        if (ratio < 0.5) {
+            rules[i] = positive_rule(poly, 3);
+        } else if (ratio < 1.5) {
+            rules[i] = positive_rule(poly, 5);
+        } else {
+            for (const auto& part : split_in_four(poly)) {
+                for (const auto& q : positive_rule(part, 5)) rules[i].push_back(q);
+            }
+        }
+    });
+    return rules;
+}
+
+}  // namespace radiant

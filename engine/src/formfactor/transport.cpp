@@ -1,0 +1,162 @@
+#include "formfactor/transport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "formfactor/point_polygon.h"
+#include "formfactor/receiver_rule.h"
+#include "geometry/random.h"
+
+namespace radiant {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Luminous intensity (cd per lm of flux) toward unit direction u.
+double intensity_per_lm(const PreparedLuminaire& l, const Vec3& u) {
+    if (l.distribution == Distribution::isotropic) return 1.0 / (4 * kPi);
+    return std::max(0.0, dot(l.aim, u)) / kPi;
+}
+
+// Luminous flux fraction of the luminaire that falls on a polygon, unoccluded (exact):
+// isotropic: Ω/4π; lambertian about `aim`: the projected solid angle / π = F(aim → polygon).
+double flux_fraction_on(const PreparedLuminaire& l, std::span<const Vec3> polygon) {
+    if (l.distribution == Distribution::isotropic) {
+        return polygon_solid_angle(l.position, polygon) / (4 * kPi);
+    }
+    return point_to_polygon_factor(l.position, l.aim, polygon);
+}
+
+}  // namespace
+
+Transport::Transport(const PreparedScene& scene, const PatchMesh& patches,
+                     const Visibility& visibility, const OcclusionCulling& culling,
+                     TransportOptions options)
+    : scene_(scene),
+      patches_(patches),
+      visibility_(visibility),
+      culling_(culling),
+      options_(options),
+      rules_(receiver_rules(patches)) {}
+
+bool Transport::patch_emits(std::size_t j) const {
+    const PatchGeometry& p = patches_.patch(j);
+    return !p.back_side && scene_.materials[static_cast<std::size_t>(p.material)].emits();
+}
+
+// Light passes from j to i only when each lies (partly) in front of the other.
+bool Transport::faces_each_other(std::size_t i, std::size_t j) const {
+    const PatchGeometry& a = patches_.patch(i);
+    const PatchGeometry& b = patches_.patch(j);
+    const double eps = 1e-9 * (a.diameter_m + b.diameter_m);
+    const bool b_in_front_of_a = std::any_of(b.vertices.begin(), b.vertices.end(), [&](const Vec3& v) {
+        return dot(v - a.vertices[0], a.normal) > eps;
+    });
+    const bool a_in_front_of_b = std::any_of(a.vertices.begin(), a.vertices.end(), [&](const Vec3& v) {
+        return dot(v - b.vertices[0], b.normal) > eps;
+    });
+    return b_in_front_of_a && a_in_front_of_b;
+}
+
+double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j,
+                                   std::uint64_t key, std::uint64_t& rays) const {
+    const PatchGeometry& src = patches_.patch(j);
+    const int m = patch_emits(j) ? options_.emitter_rays_per_point : options_.rays_per_point;
+    SampleStream rng(options_.seed, key, j);
+    std::vector<double> u(2 * static_cast<std::size_t>(m));
+    for (double& v : u) v = rng.next();
+    const std::vector<Vec3> targets = stratified_points(src.vertices, m, u);
+    const double eps = visibility_.epsilon();
+    const Vec3 from = x + n * eps;
+    int seen = 0;
+    for (const Vec3& y : targets) seen += visibility_.visible(from, y + src.normal * eps) ? 1 : 0;
+    rays += targets.size();
+    return targets.empty() ? 0.0 : seen / static_cast<double>(targets.size());
+}
+
+double Transport::point_to_patch(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
+                                 std::uint64_t& rays) const {
+    const PatchGeometry& src = patches_.patch(j);
+    if (dot(x - src.vertices[0], src.normal) <= 0) return 0;  // behind the source: it emits forward
+    const double f = point_to_polygon_factor(x, n, src.vertices);
+    if (f <= 0) return 0;
+    if (!culling_.maybe_blocked_from_point(x, n, src.piece, src.vertices, src.normal)) return f;
+    return f * visible_fraction(x, n, j, key, rays);
+}
+
+void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays) const {
+    const PatchGeometry& rcv = patches_.patch(i);
+    const auto& rule = rules_[i];
+    const std::size_t n = patches_.size();
+    for (std::size_t j = 0; j < n; ++j) {
+        row[j] = 0.0f;
+        if (j == i || !faces_each_other(i, j)) continue;
+        const PatchGeometry& src = patches_.patch(j);
+        const bool blocked = culling_.maybe_blocked(rcv.piece, rcv.vertices, rcv.normal, src.piece,
+                                                    src.vertices, src.normal);
+        double sum = 0;
+        for (std::size_t k = 0; k < rule.size(); ++k) {
+            const QuadraturePoint& q = rule[k];
+            double f = point_to_polygon_factor(q.position, rcv.normal, src.vertices);
+            if (blocked && f > 0) {
+                f *= visible_fraction(q.position, rcv.normal, j,
+                                      (static_cast<std::uint64_t>(i) << 20) ^ k, rays);
+            }
+            sum += q.weight * f;
+        }
+        row[j] = static_cast<float>(sum / rcv.area_m2);
+    }
+}
+
+Rgb Transport::luminaire_irradiance_on_patch(std::size_t i, std::uint64_t& rays) const {
+    Rgb e{0, 0, 0};
+    const PatchGeometry& p = patches_.patch(i);
+    const auto& rule = rules_[i];
+    const double eps = visibility_.epsilon();
+    for (std::size_t li = 0; li < scene_.luminaires.size(); ++li) {
+        const PreparedLuminaire& l = scene_.luminaires[li];
+        if (dot(l.position - p.vertices[0], p.normal) <= 0) continue;
+        const double fraction = flux_fraction_on(l, p.vertices);
+        if (fraction <= 0) continue;
+        double visible = 1;
+        if (culling_.maybe_blocked_from_point(l.position, Vec3{}, p.piece, p.vertices, p.normal)) {
+            // Weight each quadrature point by its share of the direct kernel I·cos/d².
+            double seen = 0, total = 0;
+            for (const QuadraturePoint& q : rule) {
+                const Vec3 d = l.position - q.position;
+                const double d2 = length_squared(d);
+                const double k = q.weight * intensity_per_lm(l, -d / std::sqrt(d2)) *
+                                 std::max(0.0, dot(p.normal, d)) / (d2 * std::sqrt(d2));
+                total += k;
+                if (visibility_.visible(q.position + p.normal * eps, l.position)) seen += k;
+                ++rays;
+            }
+            visible = total > 0 ? seen / total : 0;
+        }
+        for (int c = 0; c < 3; ++c) e[c] += l.flux_lm[c] * fraction * visible / p.area_m2;
+    }
+    return e;
+}
+
+Rgb Transport::luminaire_irradiance_at(const Vec3& x, const Vec3& n, std::uint64_t /*key*/,
+                                       std::uint64_t& rays) const {
+    Rgb e{0, 0, 0};
+    const double eps = visibility_.epsilon();
+    for (const PreparedLuminaire& l : scene_.luminaires) {
+        const Vec3 d = l.position - x;
+        const double d2 = length_squared(d);
+        if (!(d2 > 0)) continue;
+        const double r = std::sqrt(d2);
+        const double cos_r = dot(n, d) / r;
+        if (cos_r <= 0) continue;
+        const double i_per_lm = intensity_per_lm(l, -d / r);
+        if (i_per_lm <= 0) continue;
+        ++rays;
+        if (!visibility_.visible(x + n * eps, l.position)) continue;
+        for (int c = 0; c < 3; ++c) e[c] += l.flux_lm[c] * i_per_lm * cos_r / d2;
+    }
+    return e;
+}
+
+}  // namespace radiant

@@ -1,0 +1,63 @@
+// Light transport between patches, luminaires and sensors: analytic point-to-polygon factors
+// (exact when unoccluded) times visibility sampled with shadow rays (Wallace, Elmquist & Haines
+// 1989 style), with rays skipped where shaft culling proves the view clear.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "formfactor/quadrature.h"
+#include "meshing/patch_mesh.h"
+#include "scene/prepared_scene.h"
+#include "visibility/occlusion_culling.h"
+#include "visibility/visibility.h"
+
+namespace radiant {
+
+struct TransportOptions {
+    int rays_per_point = 4;           ///< shadow rays from a receiver point to a patch
+    int emitter_rays_per_point = 16;  ///< to emitting patches and luminaires, where it shows most
+    std::uint64_t seed = 1;
+};
+
+/// Everything a transport query needs; immutable after construction, shared by threads.
+class Transport {
+public:
+    Transport(const PreparedScene& scene, const PatchMesh& patches, const Visibility& visibility,
+              const OcclusionCulling& culling, TransportOptions options);
+
+    /// F(x→P_j)·V̂ for a point x with unit normal n: the fraction of a cosine-weighted hemisphere
+    /// at x covered by patch j. `key` seeds the ray samples. Counts rays into `rays`.
+    double point_to_patch(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
+                          std::uint64_t& rays) const;
+
+    /// Row i of the form-factor matrix (receiver i, all sources) into `row` (size = patches).
+    void form_factor_row(std::size_t i, float* row, std::uint64_t& rays) const;
+
+    /// Irradiance (lux, per channel) from every luminaire: on patch i (area average, exact
+    /// flux when unoccluded) or at a point.
+    Rgb luminaire_irradiance_on_patch(std::size_t i, std::uint64_t& rays) const;
+    Rgb luminaire_irradiance_at(const Vec3& x, const Vec3& n, std::uint64_t key,
+                                std::uint64_t& rays) const;
+
+    const std::vector<QuadraturePoint>& rule(std::size_t i) const { return rules_[i]; }
+    const PatchMesh& patches() const { return patches_; }
+
+private:
+    bool faces_each_other(std::size_t i, std::size_t j) const;
+    bool patch_emits(std::size_t j) const;
+    /// Fraction of stratified shadow rays from x (lifted along n) that reach patch j.
+    double visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
+                            std::uint64_t& rays) const;
+
+    const PreparedScene& scene_;
+    const PatchMesh& patches_;
+    const Visibility& visibility_;
+    const OcclusionCulling& culling_;
+    TransportOptions options_;
+    std::vector<std::vector<QuadraturePoint>> rules_;
+};
+
+}  // namespace radiant

@@ -1,0 +1,321 @@
+#include "meshing/patch_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "formfactor/quadrature.h"
+#include "geometry/polygon_split.h"
+
+namespace radiant {
+namespace {
+
+using Poly = std::vector<Vec3>;
+
+struct Segment {
+    Vec3 a, b;
+};
+
+struct Box3 {
+    Vec3 lo, hi;
+};
+
+Box3 bounds(const Poly& p, double pad) {
+    Box3 b{p[0], p[0]};
+    for (const Vec3& v : p) {
+        for (int a = 0; a < 3; ++a) {
+            b.lo[a] = std::min(b.lo[a], v[a]);
+            b.hi[a] = std::max(b.hi[a], v[a]);
+        }
+    }
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] -= pad;
+        b.hi[a] += pad;
+    }
+    return b;
+}
+
+bool overlap(const Box3& x, const Box3& y) {
+    for (int a = 0; a < 3; ++a) {
+        if (x.hi[a] < y.lo[a] || y.hi[a] < x.lo[a]) return false;
+    }
+    return true;
+}
+
+Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a + (b - a) * t; }
+
+// A convex quad as an nu × nv grid of sub-quads on its bilinear map (planar, so each is planar).
+void subdivide_quad(const Poly& q, double h, std::vector<Poly>& out) {
+    const int nu = std::max(1, static_cast<int>(std::ceil(
+                                   std::max(length(q[1] - q[0]), length(q[2] - q[3])) / h)));
+    const int nv = std::max(1, static_cast<int>(std::ceil(
+                                   std::max(length(q[3] - q[0]), length(q[2] - q[1])) / h)));
+    auto at = [&](int i, int j) {
+        const double s = static_cast<double>(i) / nu, t = static_cast<double>(j) / nv;
+        return lerp(lerp(q[0], q[1], s), lerp(q[3], q[2], s), t);
+    };
+    for (int j = 0; j < nv; ++j) {
+        for (int i = 0; i < nu; ++i) out.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+}
+
+// Well-shaped triangles split uniformly into k² similar ones; slivers by longest-edge bisection,
+// which keeps the count linear in their length instead of quadratic.
+void subdivide_triangle(const Poly& t, double h, std::vector<Poly>& out, int depth = 0) {
+    const double e[3] = {length(t[1] - t[0]), length(t[2] - t[1]), length(t[0] - t[2])};
+    const double longest = std::max({e[0], e[1], e[2]});
+    if (longest <= h || depth > 40) {
+        out.push_back(t);
+        return;
+    }
+    const double area = 0.5 * length(cross(t[1] - t[0], t[2] - t[0]));
+    const double min_height = 2 * area / longest;
+    if (min_height >= 0.3 * longest) {
+        const int k = static_cast<int>(std::ceil(longest / h));
+        auto at = [&](int i, int j) {  // barycentric lattice point i/k, j/k
+            return t[0] + (t[1] - t[0]) * (static_cast<double>(i) / k) +
+                   (t[2] - t[0]) * (static_cast<double>(j) / k);
+        };
+        for (int j = 0; j < k; ++j) {
+            for (int i = 0; i + j < k; ++i) {
+                out.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+                if (i + j + 1 < k) out.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+        }
+        return;
+    }
+    const int a = e[0] >= e[1] && e[0] >= e[2] ? 0 : (e[1] >= e[2] ? 1 : 2);
+    const Vec3& p = t[a];
+    const Vec3& q = t[(a + 1) % 3];
+    const Vec3& r = t[(a + 2) % 3];
+    const Vec3 m = (p + q) * 0.5;
+    subdivide_triangle({p, m, r}, h, out, depth + 1);
+    subdivide_triangle({m, q, r}, h, out, depth + 1);
+}
+
+void subdivide_piece(const Piece& piece, double h, std::vector<Poly>& out) {
+    const Poly& v = piece.vertices;
+    if (v.size() == 4) {
+        subdivide_quad(v, h, out);
+    } else if (v.size() == 3) {
+        subdivide_triangle(v, h, out);
+    } else {
+        const Vec3 c = polygon_centroid(v);  // fan from the centroid: well-shaped for round pieces
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            subdivide_triangle({c, v[i], v[(i + 1) % v.size()]}, h, out);
+        }
+    }
+}
+
+// Where piece q touches or crosses the plane of piece r, as segments in r's plane.
+void contact_segments(const Piece& r, const Piece& q, double eps, std::vector<Segment>& out) {
+    const std::size_t k = q.vertices.size();
+    std::vector<double> d(k);
+    bool any_pos = false, any_neg = false, all_on = true;
+    for (std::size_t i = 0; i < k; ++i) {
+        d[i] = dot(q.vertices[i] - r.vertices[0], r.normal);
+        if (std::abs(d[i]) <= eps) d[i] = 0;
+        any_pos |= d[i] > 0;
+        any_neg |= d[i] < 0;
+        all_on &= d[i] == 0;
+    }
+    if (all_on) {  // coplanar overlay (a rug, a flush panel, a box bottom): its outline cuts r
+        for (std::size_t i = 0; i < k; ++i) out.push_back({q.vertices[i], q.vertices[(i + 1) % k]});
+        return;
+    }
+    if (any_pos && any_neg) {
+        std::vector<Vec3> hits;
+        for (std::size_t i = 0; i < k; ++i) {
+            const std::size_t j = (i + 1) % k;
+            if (d[i] == 0) hits.push_back(q.vertices[i]);
+            if ((d[i] > 0 && d[j] < 0) || (d[i] < 0 && d[j] > 0)) {
+                hits.push_back(lerp(q.vertices[i], q.vertices[j], d[i] / (d[i] - d[j])));
+            }
+        }
+        if (hits.size() >= 2) out.push_back({hits.front(), hits.back()});
+        return;
+    }
+    // Touching from one side: the vertices (an edge) of q lying on r's plane.
+    std::vector<Vec3> on;
+    for (std::size_t i = 0; i < k; ++i) {
+        if (d[i] == 0) on.push_back(q.vertices[i]);
+    }
+    if (on.size() >= 2) out.push_back({on.front(), on.back()});
+}
+
+// Length of the part of segment s inside convex polygon p (in p's plane, normal n).
+double clipped_length(const Segment& s, const Poly& p, const Vec3& n) {
+    double t0 = 0, t1 = 1;
+    const Vec3 d = s.b - s.a;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Vec3 edge = p[(i + 1) % p.size()] - p[i];
+        const Vec3 inward = cross(n, edge);
+        const double num = dot(s.a - p[i], inward);
+        const double den = dot(d, inward);
+        if (std::abs(den) < 1e-300) {
+            if (num < 0) return 0;
+            continue;
+        }
+        const double t = -num / den;
+        if (den > 0) t0 = std::max(t0, t);
+        else t1 = std::min(t1, t);
+        if (t0 >= t1) return 0;
+    }
+    return (t1 - t0) * length(d);
+}
+
+void split_along(std::vector<Poly>& patches, const Segment& s, const Vec3& n, double eps) {
+    const Vec3 dir = s.b - s.a;
+    if (length(dir) <= eps) return;
+    const Vec3 m = normalized(cross(n, dir));
+    std::vector<Poly> result;
+    result.reserve(patches.size() + 4);
+    for (Poly& p : patches) {
+        if (clipped_length(s, p, n) <= eps) {
+            result.push_back(std::move(p));
+            continue;
+        }
+        auto [pos, neg] = split_by_plane(p, s.a, m, eps);
+        const double min_area = eps * eps;
+        if (pos.size() >= 3 && neg.size() >= 3 && polygon_area(pos) > min_area &&
+            polygon_area(neg) > min_area) {
+            result.push_back(simplify_polygon(pos, 0.0));
+            result.push_back(simplify_polygon(neg, 0.0));
+        } else {
+            result.push_back(std::move(p));
+        }
+    }
+    patches = std::move(result);
+}
+
+std::vector<std::vector<Segment>> all_contacts(const PreparedScene& scene, double eps) {
+    const std::size_t k = scene.pieces.size();
+    std::vector<Box3> box(k);
+    for (std::size_t i = 0; i < k; ++i) box[i] = bounds(scene.pieces[i].vertices, eps);
+    // Sweep along x so that the candidate pairs stay near-linear for spread-out scenes.
+    std::vector<std::size_t> order(k);
+    for (std::size_t i = 0; i < k; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return box[a].lo.x < box[b].lo.x; });
+    std::vector<std::vector<Segment>> contacts(k);
+    for (std::size_t oi = 0; oi < k; ++oi) {
+        const std::size_t i = order[oi];
+        for (std::size_t oj = oi + 1; oj < k && box[order[oj]].lo.x <= box[i].hi.x; ++oj) {
+            const std::size_t j = order[oj];
+            if (!overlap(box[i], box[j])) continue;
+            contact_segments(scene.pieces[i], scene.pieces[j], eps, contacts[i]);
+            contact_segments(scene.pieces[j], scene.pieces[i], eps, contacts[j]);
+        }
+    }
+    return contacts;
+}
+
+std::vector<std::vector<Poly>> subdivide_all(const PreparedScene& scene, double h) {
+    std::vector<std::vector<Poly>> out(scene.pieces.size());
+    for (std::size_t i = 0; i < scene.pieces.size(); ++i) subdivide_piece(scene.pieces[i], h, out[i]);
+    return out;
+}
+
+std::size_t count_patches(const PreparedScene& scene, const std::vector<std::vector<Poly>>& sub) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < sub.size(); ++i) {
+        const bool two = scene.materials[static_cast<std::size_t>(scene.pieces[i].material)].two_sided;
+        n += sub[i].size() * (two ? 2 : 1);
+    }
+    return n;
+}
+
+double polygon_diameter(const Poly& p) {
+    double d = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        for (std::size_t j = i + 1; j < p.size(); ++j) d = std::max(d, length(p[i] - p[j]));
+    }
+    return d;
+}
+
+}  // namespace
+
+double target_patch_edge(const PreparedScene& scene, double tolerance) {
+    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (const Piece& p : scene.pieces) {
+        for (const Vec3& v : p.vertices) {
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], v[a]);
+                hi[a] = std::max(hi[a], v[a]);
+            }
+        }
+    }
+    const Vec3 ext = hi - lo;
+    const double volume = ext.x * ext.y * ext.z;
+    double scale = scene.total_area_m2 > 0 ? 4 * volume / scene.total_area_m2 : 0;
+    if (!(scale > 0) || scale > scene.diagonal_m) scale = scene.diagonal_m;
+    const double tol = std::clamp(tolerance, 1e-6, 0.5);
+    return std::max(1.5 * scale * std::sqrt(tol), 1e-9);
+}
+
+PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) {
+    const double eps = 1e-7 * std::max(scene.diagonal_m, 1e-300);
+    double h = options.target_edge_m;
+    std::vector<std::vector<Poly>> sub = subdivide_all(scene, h);
+    for (int round = 0; round < 20 && count_patches(scene, sub) > options.max_patches; ++round) {
+        const double ratio = static_cast<double>(count_patches(scene, sub)) /
+                             static_cast<double>(options.max_patches);
+        h *= std::max(1.05, std::sqrt(ratio) * 1.02);
+        sub = subdivide_all(scene, h);
+    }
+    target_edge_m_ = h;
+
+    const std::vector<std::vector<Segment>> contacts = all_contacts(scene, eps);
+    VertexIndex index;
+    for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
+        const Piece& piece = scene.pieces[i];
+        for (const Segment& s : contacts[i]) split_along(sub[i], s, piece.normal, eps);
+        const bool two_sided =
+            scene.materials[static_cast<std::size_t>(piece.material)].two_sided;
+        for (int side = 0; side < (two_sided ? 2 : 1); ++side) {
+            for (const Poly& p : sub[i]) {
+                PatchGeometry g;
+                g.vertices = p;
+                if (side == 1) std::reverse(g.vertices.begin(), g.vertices.end());
+                g.normal = side == 1 ? -piece.normal : piece.normal;
+                g.area_m2 = polygon_area(p);
+                g.centroid = polygon_centroid(p);
+                g.diameter_m = polygon_diameter(p);
+                g.piece = static_cast<int>(i);
+                g.surface = piece.surface;
+                g.material = piece.material;
+                g.back_side = side == 1;
+                add_face(g, index);
+                patches_.push_back(std::move(g));
+            }
+        }
+    }
+    for (int c = 0; c < 3; ++c) {
+        mesh_.add_property(radiosity_[c]);
+        mesh_.add_property(unshot_[c]);
+        mesh_.add_property(irradiance_[c]);
+    }
+}
+
+// Vertices are shared between the patches of one piece side only, never across surfaces, so
+// Gouraud shading never blends light across a crease or between objects. Where sharing would
+// make a vertex non-manifold (T-junctions from contact splits), the face gets its own vertices
+// so that face i stays patch i.
+void PatchMesh::add_face(const PatchGeometry& patch, VertexIndex& index) {
+    std::vector<PolyMesh::VertexHandle> handles;
+    for (const Vec3& v : patch.vertices) {
+        const auto key = std::make_tuple(patch.piece, patch.back_side, v.x, v.y, v.z);
+        auto it = index.find(key);
+        if (it == index.end()) {
+            it = index.emplace(key, mesh_.add_vertex(PolyMesh::Point(v.x, v.y, v.z))).first;
+        }
+        handles.push_back(it->second);
+    }
+    if (mesh_.add_face(handles).is_valid()) return;
+    handles.clear();
+    for (const Vec3& v : patch.vertices) handles.push_back(mesh_.add_vertex(PolyMesh::Point(v.x, v.y, v.z)));
+    mesh_.add_face(handles);
+}
+
+}  // namespace radiant

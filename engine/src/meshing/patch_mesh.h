@@ -1,0 +1,77 @@
+// Patches: the unknowns of the radiosity system. Every piece of the prepared scene is
+// subdivided to the target size, split along the lines where other surfaces touch it (so no
+// patch straddles a wall standing on it, the main source of light leaks), and stored in one
+// OpenMesh poly mesh whose face properties carry the solver state.
+#pragma once
+
+#include <array>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+
+#include "scene/prepared_scene.h"
+
+namespace radiant {
+
+struct PatchTraits : OpenMesh::DefaultTraits {
+    using Point = OpenMesh::Vec3d;
+    using Normal = OpenMesh::Vec3d;
+};
+using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<PatchTraits>;
+
+/// Immutable geometry of one patch (face i of the mesh is patch i).
+struct PatchGeometry {
+    std::vector<Vec3> vertices;  ///< convex, counter-clockwise about `normal`
+    Vec3 normal;                 ///< unit, the side that receives and emits
+    Vec3 centroid;
+    double area_m2 = 0;
+    double diameter_m = 0;
+    int piece = 0;
+    int surface = 0;
+    int material = 0;
+    bool back_side = false;  ///< the back of a two-sided surface
+};
+
+struct MeshingOptions {
+    double target_edge_m = 1.0;
+    std::size_t max_patches = 3000;  ///< the target edge grows until the estimate fits
+};
+
+/// Target patch edge from the scene's scale and the tolerance: radiosity varies over the mean
+/// free path 4V/S of the enclosure, and face means converge as O(h²), so h ∝ (4V/S)·√tol.
+double target_patch_edge(const PreparedScene& scene, double tolerance);
+
+class PatchMesh {
+public:
+    PatchMesh(const PreparedScene& scene, const MeshingOptions& options);
+
+    std::size_t size() const { return patches_.size(); }
+    const PatchGeometry& patch(std::size_t i) const { return patches_[i]; }
+    const std::vector<PatchGeometry>& patches() const { return patches_; }
+    const PolyMesh& mesh() const { return mesh_; }
+    double target_edge_m() const { return target_edge_m_; }
+
+    /// Per-face solver state, one property per colour channel (contiguous, index = patch).
+    std::vector<double>& radiosity(int channel) { return prop(radiosity_[channel]); }
+    std::vector<double>& unshot(int channel) { return prop(unshot_[channel]); }
+    std::vector<double>& irradiance(int channel) { return prop(irradiance_[channel]); }
+    const std::vector<double>& radiosity(int channel) const { return prop(radiosity_[channel]); }
+    const std::vector<double>& irradiance(int channel) const { return prop(irradiance_[channel]); }
+
+private:
+    using DoubleProp = OpenMesh::FPropHandleT<double>;
+    std::vector<double>& prop(DoubleProp h) { return mesh_.property(h).data_vector(); }
+    const std::vector<double>& prop(DoubleProp h) const { return mesh_.property(h).data_vector(); }
+    using VertexIndex =
+        std::map<std::tuple<int, bool, double, double, double>, PolyMesh::VertexHandle>;
+    void add_face(const PatchGeometry& patch, VertexIndex& index);
+
+    PolyMesh mesh_;
+    std::vector<PatchGeometry> patches_;
+    std::array<DoubleProp, 3> radiosity_, unshot_, irradiance_;
+    double target_edge_m_ = 1.0;
+};
+
+}  // namespace radiant

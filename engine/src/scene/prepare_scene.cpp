@@ -1,0 +1,190 @@
+#include "scene/prepared_scene.h"
+
+#include <algorithm>
+#include <limits>
+#include <unordered_map>
+
+#include "formfactor/quadrature.h"
+#include "geometry/polygon_split.h"
+
+namespace radiant {
+namespace {
+
+struct RawPolygon {
+    std::vector<Vec3> vertices;  // world metres
+    int surface;
+    int material;
+};
+
+// The six faces of an axis-aligned box, counter-clockwise about the requested normal.
+std::vector<std::vector<Vec3>> box_faces(const Vec3& lo, const Vec3& hi, bool facing_in) {
+    std::vector<std::vector<Vec3>> faces;
+    for (int axis = 0; axis < 3; ++axis) {
+        const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+        for (int side = 0; side < 2; ++side) {
+            Vec3 outward{};
+            outward[axis] = side == 0 ? -1.0 : 1.0;
+            const Vec3 wanted = facing_in ? -outward : outward;
+            std::vector<Vec3> quad(4);
+            const double c = side == 0 ? lo[axis] : hi[axis];
+            const double u[4] = {lo[a1], hi[a1], hi[a1], lo[a1]};
+            const double v[4] = {lo[a2], lo[a2], hi[a2], hi[a2]};
+            for (int k = 0; k < 4; ++k) {
+                quad[k][axis] = c;
+                quad[k][a1] = u[k];
+                quad[k][a2] = v[k];
+            }
+            if (dot(cross(quad[1] - quad[0], quad[2] - quad[0]), wanted) < 0) {
+                std::reverse(quad.begin(), quad.end());
+            }
+            faces.push_back(std::move(quad));
+        }
+    }
+    return faces;
+}
+
+std::vector<Vec3> scaled(const std::vector<Vec3>& points, double s) {
+    std::vector<Vec3> out;
+    out.reserve(points.size());
+    for (const Vec3& p : points) out.push_back(p * s);
+    return out;
+}
+
+std::vector<RawPolygon> raw_polygons(const Scene& scene, const std::vector<int>& material_of) {
+    const double s = meters_per_unit(scene.units);
+    std::vector<RawPolygon> raw;
+    for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+        const Surface& surface = scene.surfaces[i];
+        const int si = static_cast<int>(i);
+        const int mi = material_of[i];
+        if (const auto* polygon = std::get_if<Polygon>(&surface.geometry)) {
+            raw.push_back({scaled(*polygon, s), si, mi});
+        } else if (const auto* mesh = std::get_if<MeshGeometry>(&surface.geometry)) {
+            for (const auto& face : mesh->faces) {
+                std::vector<Vec3> v;
+                for (const int k : face) v.push_back(mesh->vertices[static_cast<std::size_t>(k)] * s);
+                raw.push_back({std::move(v), si, mi});
+            }
+        } else {
+            const auto& box = std::get<BoxGeometry>(surface.geometry);
+            for (auto& face : box_faces(box.min * s, box.max * s, box.facing_in)) {
+                raw.push_back({std::move(face), si, mi});
+            }
+        }
+    }
+    return raw;
+}
+
+bool is_gray(const Rgb& c) { return c[0] == c[1] && c[1] == c[2]; }
+
+// Emission and luminaire colours are relative: scaled so that their luminance is 1.
+Rgb normalized_color(const std::optional<Rgb>& color) {
+    if (!color) return {1, 1, 1};
+    const double y = luminance(*color);
+    if (!(y > 0)) return {1, 1, 1};
+    return {(*color)[0] / y, (*color)[1] / y, (*color)[2] / y};
+}
+
+}  // namespace
+
+PreparedScene prepare_scene(const Scene& scene) {
+    PreparedScene out;
+    out.name = scene.name;
+
+    std::unordered_map<std::string, int> material_index;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        material_index[scene.materials[i].name] = static_cast<int>(i);
+    }
+    std::vector<int> material_of;
+    for (const Surface& s : scene.surfaces) {
+        out.surface_names.push_back(s.name);
+        const auto it = material_index.find(s.material);
+        material_of.push_back(it == material_index.end() ? 0 : it->second);
+    }
+
+    const std::vector<RawPolygon> raw = raw_polygons(scene, material_of);
+
+    Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+            std::numeric_limits<double>::max()};
+    Vec3 hi = -lo;
+    for (const RawPolygon& p : raw) {
+        for (const Vec3& v : p.vertices) {
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], v[a]);
+                hi[a] = std::max(hi[a], v[a]);
+            }
+        }
+    }
+    if (raw.empty()) lo = hi = Vec3{};
+    out.world_origin = (lo + hi) * 0.5;
+    out.diagonal_m = length(hi - lo);
+
+    // Pieces in the local frame. Polygons that are not convex or not planar to 1e-9 of the scene
+    // become triangles, each planar by construction.
+    const double planarity = 1e-9 * out.diagonal_m;
+    const double min_area = 1e-14 * out.diagonal_m * out.diagonal_m;
+    out.surface_area_m2.assign(scene.surfaces.size(), 0.0);
+    std::vector<double> material_area(scene.materials.size(), 0.0);
+    for (const RawPolygon& p : raw) {
+        std::vector<Vec3> local;
+        for (const Vec3& v : p.vertices) local.push_back(v - out.world_origin);
+        const Vec3 n = polygon_normal(local);
+        if (length(n) == 0) continue;
+        for (auto& piece : convex_pieces(simplify_polygon(local, planarity), n, planarity)) {
+            const double area = polygon_area(piece);
+            const Vec3 pn = polygon_normal(piece);
+            if (area <= min_area || length(pn) == 0) continue;
+            out.surface_area_m2[static_cast<std::size_t>(p.surface)] += area;
+            material_area[static_cast<std::size_t>(p.material)] += area;
+            out.total_area_m2 += area;
+            out.pieces.push_back({std::move(piece), pn, area, p.surface, p.material});
+        }
+    }
+
+    bool gray = true;
+    for (const Material& m : scene.materials) {
+        gray = gray && is_gray(m.reflectance);
+        if (m.emission) gray = gray && is_gray(normalized_color(m.emission->color));
+    }
+    for (const Luminaire& l : scene.luminaires) gray = gray && is_gray(normalized_color(l.color));
+    out.channels = gray ? 1 : 3;
+
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        PreparedMaterial pm;
+        pm.name = m.name;
+        pm.reflectance = m.reflectance;
+        pm.two_sided = m.two_sided;
+        if (m.emission && m.emission->value > 0) {
+            double exitance = m.emission->value;
+            if (m.emission->kind == Emission::Kind::flux) {
+                exitance = material_area[i] > 0 ? m.emission->value / material_area[i] : 0.0;
+            }
+            const Rgb c = normalized_color(m.emission->color);
+            for (int k = 0; k < 3; ++k) pm.exitance_lm_m2[k] = exitance * c[k];
+        }
+        out.materials.push_back(std::move(pm));
+    }
+
+    const double s = meters_per_unit(scene.units);
+    for (const Luminaire& l : scene.luminaires) {
+        PreparedLuminaire pl;
+        pl.name = l.name;
+        pl.position = l.position * s - out.world_origin;
+        const Rgb c = normalized_color(l.color);
+        for (int k = 0; k < 3; ++k) pl.flux_lm[k] = l.flux_lm * c[k];
+        pl.distribution = l.distribution;
+        pl.aim = normalized(l.aim);
+        out.luminaires.push_back(std::move(pl));
+    }
+    for (const SensorSet& set : scene.sensors) {
+        PreparedSensorSet ps;
+        ps.name = set.name;
+        for (const Vec3& p : set.points) ps.points.push_back(p * s - out.world_origin);
+        ps.normal = normalized(set.normal);
+        out.sensors.push_back(std::move(ps));
+    }
+    return out;
+}
+
+}  // namespace radiant

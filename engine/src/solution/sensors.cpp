@@ -1,0 +1,53 @@
+#include "solution/sensors.h"
+
+#include <algorithm>
+
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+namespace radiant {
+
+void fill_sensor_statistics(SensorResult& r) {
+    if (r.illuminance.empty()) return;
+    const auto [lo, hi] = std::minmax_element(r.illuminance.begin(), r.illuminance.end());
+    r.min = *lo;
+    r.max = *hi;
+    double sum = 0;
+    for (const double e : r.illuminance) sum += e;
+    r.average = sum / static_cast<double>(r.illuminance.size());
+    r.uniformity = r.average > 0 ? r.min / r.average : 0;
+}
+
+std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Transport& transport,
+                                         const std::array<std::vector<double>, 3>& radiosity,
+                                         int channels, std::uint64_t& rays) {
+    std::vector<SensorResult> results;
+    tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
+    const std::size_t n = transport.patches().size();
+    for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
+        const PreparedSensorSet& set = scene.sensors[s];
+        SensorResult r;
+        r.name = set.name;
+        r.illuminance.resize(set.points.size());
+        tbb::parallel_for(std::size_t{0}, set.points.size(), [&](std::size_t k) {
+            std::uint64_t& local_rays = ray_count.local();
+            const Vec3& x = set.points[k];
+            const std::uint64_t key = (static_cast<std::uint64_t>(s) << 40) ^ (k << 1) ^ 1u;
+            Rgb e = transport.luminaire_irradiance_at(x, set.normal, key, local_rays);
+            for (std::size_t j = 0; j < n; ++j) {
+                const double b = channels == 1 ? radiosity[0][j]
+                                               : std::max({radiosity[0][j], radiosity[1][j], radiosity[2][j]});
+                if (!(b > 0)) continue;
+                const double f = transport.point_to_patch(x, set.normal, j, key, local_rays);
+                for (int c = 0; c < channels; ++c) e[c] += f * radiosity[static_cast<std::size_t>(c)][j];
+            }
+            r.illuminance[k] = channels == 1 ? e[0] : luminance(e);
+        });
+        fill_sensor_statistics(r);
+        results.push_back(std::move(r));
+    }
+    rays += ray_count.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
+    return results;
+}
+
+}  // namespace radiant

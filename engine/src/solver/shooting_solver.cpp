@@ -1,0 +1,119 @@
+#include "solver/shooting_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+namespace radiant {
+
+double shooting_relaxation(const LinearSystem& s) {
+    double area = 0, rho_area = 0;
+    for (std::size_t i = 0; i < s.n; ++i) {
+        double rho = 0;
+        for (int c = 0; c < s.channels; ++c) rho = std::max(rho, s.reflectance[static_cast<std::size_t>(c)][i]);
+        area += s.area_m2[i];
+        rho_area += s.area_m2[i] * rho;
+    }
+    return area > 0 ? std::min(1.5, 1.0 + 0.5 * rho_area / area) : 1.0;
+}
+
+SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& control) const {
+    SolverOutcome out;
+    const std::size_t n = s.n;
+    const int channels = s.channels;
+    const double omega = shooting_relaxation(s);
+
+    // Columns of F are what a shooter distributes: transpose once for contiguous access.
+    std::vector<float> ft(n * n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t j) {
+        for (std::size_t i = 0; i < n; ++i) ft[j * n + i] = s.f(i, j);
+    });
+
+    std::array<ContractionNorms, 3> q;
+    std::array<std::vector<double>, 3> shot, unshot;  // B = shot + unshot
+    double total_area = 0, emitted = 0;
+    for (std::size_t i = 0; i < n; ++i) total_area += s.area_m2[i];
+    for (int c = 0; c < channels; ++c) {
+        const auto ci = static_cast<std::size_t>(c);
+        q[ci] = contraction_norms(s, c);
+        shot[ci].assign(n, 0.0);
+        unshot[ci] = s.source[ci];
+        emitted = std::max(emitted, area_weighted_sum(s.source[ci], s.area_m2));
+    }
+
+    // Bound from the residual of B = shot + unshot, which is M·unshot.
+    auto estimate = [&](double& unshot_fraction) {
+        double worst = 0, unshot_power = 0;
+        for (int c = 0; c < channels; ++c) {
+            const auto ci = static_cast<std::size_t>(c);
+            double u_inf = 0, u_a1 = 0, sum_ab = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                u_inf = std::max(u_inf, std::abs(unshot[ci][i]));
+                u_a1 += s.area_m2[i] * std::abs(unshot[ci][i]);
+                sum_ab += s.area_m2[i] * (shot[ci][i] + unshot[ci][i]);
+            }
+            unshot_power = std::max(unshot_power, u_a1);
+            worst = std::max(worst, relative_error_bound(q[ci], q[ci].q_inf * u_inf, q[ci].q_1 * u_a1,
+                                                         sum_ab, total_area));
+        }
+        unshot_fraction = emitted > 0 ? unshot_power / emitted : 0;
+        return worst;
+    };
+
+    // The O(n) estimate is cheap next to a shot's O(n) update only every few shots.
+    const std::size_t check_every = std::max<std::size_t>(1, n / 16);
+    auto last_report = std::chrono::steady_clock::now();
+    const std::size_t max_shots = 1000 * std::max<std::size_t>(n, 1000);
+    while (true) {
+        if (out.iterations % check_every == 0) {
+            out.error_estimate = estimate(out.unshot_fraction);
+            const auto now = std::chrono::steady_clock::now();
+            if (control.progress && now - last_report > std::chrono::milliseconds(100)) {
+                control.progress(out.iterations, out.error_estimate, out.unshot_fraction);
+                last_report = now;
+            }
+            if (out.error_estimate <= control.tolerance) {
+                out.converged = true;
+                break;
+            }
+            if (control.should_stop() || out.iterations >= max_shots) break;
+        }
+        // Brightest unshot power first (summed over channels).
+        std::size_t shooter = 0;
+        double best = -1;
+        for (std::size_t i = 0; i < n; ++i) {
+            double p = 0;
+            for (int c = 0; c < channels; ++c) p += std::abs(unshot[static_cast<std::size_t>(c)][i]);
+            p *= s.area_m2[i];
+            if (p > best) {
+                best = p;
+                shooter = i;
+            }
+        }
+        if (best <= 0) {
+            out.error_estimate = estimate(out.unshot_fraction);
+            out.converged = out.error_estimate <= control.tolerance;
+            break;
+        }
+        const float* column = &ft[shooter * n];
+        for (int c = 0; c < channels; ++c) {
+            const auto ci = static_cast<std::size_t>(c);
+            const double delta = omega * unshot[ci][shooter];
+            shot[ci][shooter] += delta;
+            unshot[ci][shooter] -= delta;
+            const auto& rho = s.reflectance[ci];
+            auto& u = unshot[ci];
+            for (std::size_t i = 0; i < n; ++i) u[i] += rho[i] * column[i] * delta;
+        }
+        ++out.iterations;
+    }
+    for (int c = 0; c < channels; ++c) {
+        const auto ci = static_cast<std::size_t>(c);
+        out.radiosity[ci].resize(n);
+        for (std::size_t i = 0; i < n; ++i) out.radiosity[ci][i] = std::max(0.0, shot[ci][i] + unshot[ci][i]);
+    }
+    return out;
+}
+
+}  // namespace radiant

@@ -1,0 +1,61 @@
+// The solver interface: every method solves the same LinearSystem, honours the same control
+// (tolerance, deadline, cancellation) and reports the same statistics, so speed against error
+// can be compared on one scene in one run.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "radiant/solve.h"
+#include "solver/linear_system.h"
+
+namespace radiant {
+
+struct SolverControl {
+    double tolerance = 0.01;  ///< stop when the error bound is at or below this
+    std::optional<std::chrono::steady_clock::time_point> deadline;
+    const CancellationToken* cancel = nullptr;
+    /// Called now and then with (iterations, error estimate, unshot fraction).
+    std::function<void(std::size_t, double, double)> progress;
+
+    bool should_stop() const {
+        return (cancel && cancel->cancelled()) ||
+               (deadline && std::chrono::steady_clock::now() >= *deadline);
+    }
+};
+
+struct SolverOutcome {
+    std::array<std::vector<double>, 3> radiosity;  ///< per channel, lm/m²
+    std::size_t iterations = 0;
+    double error_estimate = 0;
+    double unshot_fraction = 0;
+    bool converged = false;
+};
+
+class Solver {
+public:
+    virtual ~Solver() = default;
+    virtual std::string_view name() const = 0;
+    /// Thread-safe for distinct systems; uses the calling thread's TBB arena for parallel loops.
+    virtual SolverOutcome solve(const LinearSystem& system, const SolverControl& control) const = 0;
+};
+
+/// direct, jacobi, gauss-seidel, shooting; nullptr for an unknown name.
+std::unique_ptr<Solver> make_solver(std::string_view name);
+
+/// Σ_i A_i B_i over one channel.
+double area_weighted_sum(const std::vector<double>& values, const std::vector<double>& area);
+
+/// Ambient term of Cohen et al. 1988 for display while shooting: the unshot exitance spread
+/// over the scene and multiplied by the interreflection factor 1/(1 − ρ̄), ρ̄ area-weighted.
+/// Display only; it never enters the solution.
+double ambient_term(const std::vector<double>& unshot, const std::vector<double>& reflectance,
+                    const std::vector<double>& area);
+
+}  // namespace radiant
