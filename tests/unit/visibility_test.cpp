@@ -430,6 +430,14 @@ TEST(Visibility, BatchEqualsPerQuery) {
     for (int i = 0; i < 10007; ++i)  // not a multiple of any packet width
         queries.push_back({random_in_box(rng, {-2.5, -2.5, -2.5}, {2.5, 2.5, 2.5}),
                            random_in_box(rng, {-2.5, -2.5, -2.5}, {2.5, 2.5, 2.5})});
+    // Shafts of 16 rays between two small patches: the coherent packet path.
+    std::uniform_real_distribution<double> u(0.0, 0.2);
+    for (int link = 0; link < 500; ++link) {
+        const Vec3 p = random_in_box(rng, {-2.5, -2.5, -2.5}, {2.5, 2.5, 2.5});
+        const Vec3 q = random_in_box(rng, {-2.5, -2.5, -2.5}, {2.5, 2.5, 2.5});
+        for (int k = 0; k < 16; ++k)
+            queries.push_back({p + Vec3{u(rng), u(rng), u(rng)}, q + Vec3{u(rng), u(rng), u(rng)}});
+    }
     queries[17].to.y = std::numeric_limits<double>::quiet_NaN();
     for (const auto& vis : {make_embree_visibility(tris), make_brute_force_visibility(tris)}) {
         std::vector<std::uint8_t> out(queries.size(), 7);
