@@ -87,6 +87,7 @@ class EmbreeVisibility final : public Visibility {
   private:
     static void on_error(void* self, RTCError code, const char* message);
     void throw_if_error(const char* what) const;
+    [[noreturn]] void fail(const char* what) const;
 
     mutable std::mutex error_mutex_;  // on_error may run on any thread
     std::string first_error_;
@@ -110,6 +111,11 @@ void EmbreeVisibility::throw_if_error(const char* what) const {
                              (first_error_.empty() ? error_name(code) : first_error_));
 }
 
+void EmbreeVisibility::fail(const char* what) const {
+    throw_if_error(what);  // throws with Embree's message when it reported one
+    throw std::runtime_error(std::string("Embree ") + what + " failed");
+}
+
 EmbreeVisibility::EmbreeVisibility(std::span<const Triangle> triangles)
     : Visibility(ray_epsilon(triangles)) {
     device_.reset(rtcNewDevice(nullptr));
@@ -121,7 +127,7 @@ EmbreeVisibility::EmbreeVisibility(std::span<const Triangle> triangles)
     rtcSetDeviceErrorFunction(device_.get(), &EmbreeVisibility::on_error, this);
 
     scene_.reset(rtcNewScene(device_.get()));
-    if (!scene_) throw_if_error("scene creation");
+    if (!scene_) fail("scene creation");
     // ROBUST: watertight-ish traversal/intersection, so rays through shared edges cannot
     // slip between triangles (light leaks), at a small speed cost.
     rtcSetSceneFlags(scene_.get(), RTC_SCENE_FLAG_ROBUST);
@@ -133,7 +139,7 @@ EmbreeVisibility::EmbreeVisibility(std::span<const Triangle> triangles)
 
     if (!input_index_.empty()) {
         RTCGeometry geom = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-        if (!geom) throw_if_error("geometry creation");
+        if (!geom) fail("geometry creation");
         const std::size_t n = input_index_.size();
         // Unshared vertices: equal double coordinates round to equal floats, so neighbours
         // still meet exactly along shared edges. Embree pads these buffers for SIMD loads.
@@ -143,7 +149,7 @@ EmbreeVisibility::EmbreeVisibility(std::span<const Triangle> triangles)
             geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
         if (!vertices || !indices) {
             rtcReleaseGeometry(geom);
-            throw_if_error("buffer allocation");
+            fail("buffer allocation");
         }
         for (std::size_t k = 0; k < n; ++k) {
             const Triangle& t = triangles[static_cast<std::size_t>(input_index_[k])];
