@@ -52,6 +52,11 @@ private:
     double epsilon_;
 };
 
+/// True for triangles no implementation can hit: a non-finite vertex or (near) zero area,
+/// |(b−a)×(c−a)| ≤ 1e-12 · (longest edge)². Both implementations skip exactly these, so
+/// their answers stay comparable; indices of the remaining triangles are unchanged.
+bool is_degenerate(const Triangle& t);
+
 /// max(1e-6 · scene diagonal, 32 float ulps of the largest coordinate): large enough to avoid
 /// self-hits with Embree's single-precision rays, small enough for millimetre features.
 double ray_epsilon(std::span<const Triangle> triangles);
