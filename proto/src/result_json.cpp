@@ -7,8 +7,6 @@
 namespace radiant::proto {
 namespace {
 
-using Json = nlohmann::ordered_json;
-
 nlohmann::json stats_json(const SolveStats& s) {
     return {{"method", s.method},
             {"patches", s.patches},
