@@ -1,0 +1,38 @@
+// radiant-scene/1 JSON → radiant::Scene, with every problem reported as a JSON pointer.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "radiant/scene.h"
+
+namespace radiant::proto {
+
+struct ParseLimits {
+    std::size_t max_bytes = 64u << 20;  ///< larger documents are refused before parsing
+    SceneLimits scene;
+};
+
+struct ParseOutcome {
+    std::optional<Scene> scene;     ///< set only when `problems` is empty
+    std::vector<Problem> problems;  ///< in document order: structure first, then check_scene
+    bool ok() const { return problems.empty(); }
+};
+
+/// Parses and checks a scene document: JSON syntax, structure (types, required and unknown
+/// keys), then radiant::check_scene. Reports all problems found, each with the RFC 6901 pointer
+/// of the offending value ("" for the whole document). Never throws for bad input. Thread-safe.
+ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits = {});
+
+/// Reads and parses a scene file. Files over `limits.max_bytes` are refused without being read;
+/// an unreadable file gives one problem with pointer "".
+ParseOutcome load_scene_file(const std::filesystem::path& path, const ParseLimits& limits = {});
+
+/// "FILE: /json/pointer: message" (the contract's one-line form; the pointer may be empty).
+std::string format_problem(const std::string& file, const Problem& problem);
+
+}  // namespace radiant::proto

@@ -1,0 +1,477 @@
+#include "radiant/proto/scene_json.h"
+
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "json_text.h"
+
+namespace radiant::proto {
+namespace {
+
+using Json = nlohmann::ordered_json;
+using Ptr = Json::json_pointer;
+
+constexpr std::string_view kFormat = "radiant-scene/1";
+
+/// The part of a pointer that names one scene entity: "/surfaces/3", "/materials/wall",
+/// "/settings". Entities are the unit at which structural damage hides semantic problems.
+std::string entity_of(const std::string& pointer) {
+    static const std::set<std::string, std::less<>> lists{"materials", "surfaces", "luminaires",
+                                                          "sensors"};
+    const std::size_t first = pointer.find('/', 1);
+    if (first == std::string::npos) return pointer;
+    const std::string_view head = std::string_view(pointer).substr(1, first - 1);
+    if (!lists.contains(head)) return pointer.substr(0, first);
+    return pointer.substr(0, pointer.find('/', first + 1));
+}
+
+/// Reads the structure of a scene document. Values that cannot be read are reported and replaced
+/// by placeholders, so that every entity keeps its index and later checks keep their pointers.
+class SceneReader {
+  public:
+    explicit SceneReader(const ParseLimits& limits) : limits_(limits) {}
+
+    Scene read(const Json& root);
+
+    std::vector<Problem> problems_;
+    std::set<std::string> broken_;        ///< entities with a value that could not be read
+    std::set<std::size_t> grid_sensors_;  ///< sensor sets whose points come from a grid
+
+  private:
+    void report(const Ptr& p, std::string message, bool breaks = true) {
+        std::string pointer = p.to_string();
+        if (breaks) broken_.insert(entity_of(pointer));
+        problems_.push_back({std::move(pointer), std::move(message)});
+    }
+
+    /// Unknown keys are reported but do not hide other problems: the known keys still parse.
+    void check_keys(const Json& object, const Ptr& p,
+                    std::initializer_list<std::string_view> keys) {
+        for (const auto& item : object.items()) {
+            if (std::find(keys.begin(), keys.end(), item.key()) == keys.end()) {
+                report(p / item.key(), "unknown key", false);
+            }
+        }
+    }
+
+    const Json* member(const Json& object, const Ptr& p, const char* key, bool required) {
+        const auto it = object.find(key);
+        if (it != object.end()) return &*it;
+        if (required) report(p / key, std::string("missing required key \"") + key + "\"");
+        return nullptr;
+    }
+
+    bool object(const Json& j, const Ptr& p, const char* what) {
+        if (j.is_object()) return true;
+        report(p, std::string(what) + " must be an object");
+        return false;
+    }
+
+    bool array(const Json& j, const Ptr& p, const char* what) {
+        if (j.is_array()) return true;
+        report(p, std::string(what) + " must be an array");
+        return false;
+    }
+
+    double number(const Json& j, const Ptr& p, const char* what) {
+        if (j.is_number()) return j.get<double>();
+        report(p, std::string(what) + " must be a number");
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    /// An integer in [min, max]; like JSON Schema, 2.0 counts as an integer.
+    std::optional<long long> integer(const Json& j, const Ptr& p, const char* what, long long min,
+                                     long long max) {
+        const double d = j.is_number() ? j.get<double>() : 0.5;
+        if (std::floor(d) != d || d < static_cast<double>(min)) {
+            report(p, std::string(what) + " must be an integer >= " + std::to_string(min));
+            return std::nullopt;
+        }
+        if (d > static_cast<double>(max)) {
+            report(p, std::string(what) + " must be at most " + std::to_string(max));
+            return std::nullopt;
+        }
+        return static_cast<long long>(d);
+    }
+
+    std::string string(const Json& j, const Ptr& p, const char* what) {
+        if (j.is_string()) return j.get<std::string>();
+        report(p, std::string(what) + " must be a string");
+        return {};
+    }
+
+    Vec3 vec3(const Json& j, const Ptr& p, const char* what) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        if (!j.is_array() || j.size() != 3) {
+            report(p, std::string(what) + " must be an array of 3 numbers");
+            return {nan, nan, nan};
+        }
+        Vec3 v;
+        for (std::size_t c = 0; c < 3; ++c)
+            v[static_cast<int>(c)] = number(j[c], p / c, "coordinate");
+        return v;
+    }
+
+    std::vector<Vec3> points(const Json& j, const Ptr& p, const char* what) {
+        std::vector<Vec3> out;
+        if (!array(j, p, what)) return out;
+        out.reserve(j.size());
+        for (std::size_t k = 0; k < j.size(); ++k) out.push_back(vec3(j[k], p / k, "a point"));
+        return out;
+    }
+
+    Rgb rgb(const Json& j, const Ptr& p, const char* what) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        if (!j.is_array() || j.size() != 3) {
+            report(p, std::string(what) + " must be an array of 3 numbers");
+            return {nan, nan, nan};
+        }
+        Rgb out;
+        for (std::size_t c = 0; c < 3; ++c) out[c] = number(j[c], p / c, what);
+        return out;
+    }
+
+    Material material(const std::string& name, const Json& j, const Ptr& p);
+    std::optional<Emission> emission(const Json& j, const Ptr& p);
+    Surface surface(const Json& j, const Ptr& p);
+    MeshGeometry mesh(const Json& j, const Ptr& p);
+    BoxGeometry box(const Json& j, const Ptr& p);
+    Luminaire luminaire(const Json& j, const Ptr& p);
+    SensorSet sensor(const Json& j, const Ptr& p, std::size_t index);
+    std::vector<Vec3> grid(const Json& j, const Ptr& p);
+    Settings settings(const Json& j, const Ptr& p);
+
+    const ParseLimits& limits_;
+};
+
+Scene SceneReader::read(const Json& root) {
+    Scene scene;
+    const Ptr p;
+    check_keys(
+        root, p,
+        {"format", "name", "units", "materials", "surfaces", "luminaires", "sensors", "settings"});
+    if (const Json* j = member(root, p, "format", true)) {
+        if (!j->is_string() || j->get<std::string>() != kFormat) {
+            report(p / "format", "format must be \"" + std::string(kFormat) + "\"");
+        }
+    }
+    if (const Json* j = member(root, p, "name", false)) scene.name = string(*j, p / "name", "name");
+    if (const Json* j = member(root, p, "units", false)) {
+        static const std::pair<const char*, LengthUnit> units[] = {{"m", LengthUnit::m},
+                                                                   {"cm", LengthUnit::cm},
+                                                                   {"mm", LengthUnit::mm},
+                                                                   {"ft", LengthUnit::ft},
+                                                                   {"in", LengthUnit::in}};
+        const auto it = std::find_if(std::begin(units), std::end(units),
+                                     [&](const auto& u) { return *j == u.first; });
+        if (it == std::end(units)) {
+            report(p / "units", "units must be one of m, cm, mm, ft, in");
+        } else {
+            scene.units = it->second;
+        }
+    }
+    if (const Json* j = member(root, p, "materials", true);
+        j && object(*j, p / "materials", "materials")) {
+        for (const auto& item : j->items()) {
+            scene.materials.push_back(
+                material(item.key(), item.value(), p / "materials" / item.key()));
+        }
+    }
+    if (const Json* j = member(root, p, "surfaces", true);
+        j && array(*j, p / "surfaces", "surfaces")) {
+        for (std::size_t i = 0; i < j->size(); ++i) {
+            scene.surfaces.push_back(surface((*j)[i], p / "surfaces" / i));
+        }
+    }
+    if (const Json* j = member(root, p, "luminaires", false);
+        j && array(*j, p / "luminaires", "luminaires")) {
+        for (std::size_t i = 0; i < j->size(); ++i) {
+            scene.luminaires.push_back(luminaire((*j)[i], p / "luminaires" / i));
+        }
+    }
+    if (const Json* j = member(root, p, "sensors", false);
+        j && array(*j, p / "sensors", "sensors")) {
+        for (std::size_t i = 0; i < j->size(); ++i) {
+            scene.sensors.push_back(sensor((*j)[i], p / "sensors" / i, i));
+        }
+    }
+    if (const Json* j = member(root, p, "settings", false)) {
+        scene.settings = settings(*j, p / "settings");
+    }
+    return scene;
+}
+
+Material SceneReader::material(const std::string& name, const Json& j, const Ptr& p) {
+    Material m;
+    m.name = name;
+    if (!object(j, p, "a material")) return m;
+    check_keys(j, p, {"reflectance", "emission", "two_sided"});
+    if (const Json* r = member(j, p, "reflectance", true)) {
+        if (r->is_array()) {
+            m.reflectance = rgb(*r, p / "reflectance", "reflectance");
+            m.rgb_reflectance = true;
+        } else if (r->is_number()) {
+            m.reflectance.fill(r->get<double>());
+        } else {
+            report(p / "reflectance", "reflectance must be a number or an array of 3 numbers");
+        }
+    }
+    if (const Json* e = member(j, p, "emission", false)) m.emission = emission(*e, p / "emission");
+    if (const Json* t = member(j, p, "two_sided", false)) {
+        if (t->is_boolean()) {
+            m.two_sided = t->get<bool>();
+        } else {
+            report(p / "two_sided", "two_sided must be true or false");
+        }
+    }
+    return m;
+}
+
+std::optional<Emission> SceneReader::emission(const Json& j, const Ptr& p) {
+    if (!object(j, p, "emission")) return std::nullopt;
+    check_keys(j, p, {"exitance", "flux", "color"});
+    const bool exitance = j.contains("exitance"), flux = j.contains("flux");
+    if (exitance == flux) {
+        report(p, "emission needs exactly one of exitance or flux");
+        return std::nullopt;
+    }
+    Emission e;
+    e.kind = flux ? Emission::Kind::flux : Emission::Kind::exitance;
+    const char* key = flux ? "flux" : "exitance";
+    e.value = number(j[key], p / key, key);
+    if (const Json* c = member(j, p, "color", false)) e.color = rgb(*c, p / "color", "color");
+    return e;
+}
+
+Surface SceneReader::surface(const Json& j, const Ptr& p) {
+    Surface s;
+    if (!object(j, p, "a surface")) return s;
+    check_keys(j, p, {"name", "material", "polygon", "mesh", "box"});
+    if (const Json* n = member(j, p, "name", true)) s.name = string(*n, p / "name", "name");
+    if (const Json* m = member(j, p, "material", true)) {
+        s.material = string(*m, p / "material", "material");
+    }
+    const int kinds = int{j.contains("polygon")} + int{j.contains("mesh")} + int{j.contains("box")};
+    if (kinds != 1) {
+        report(p, "a surface needs exactly one of polygon, mesh or box");
+    } else if (j.contains("polygon")) {
+        s.geometry = points(j["polygon"], p / "polygon", "polygon");
+    } else if (j.contains("mesh")) {
+        s.geometry = mesh(j["mesh"], p / "mesh");
+    } else {
+        s.geometry = box(j["box"], p / "box");
+    }
+    return s;
+}
+
+MeshGeometry SceneReader::mesh(const Json& j, const Ptr& p) {
+    MeshGeometry m;
+    if (!object(j, p, "mesh")) return m;
+    check_keys(j, p, {"vertices", "faces"});
+    if (const Json* v = member(j, p, "vertices", true))
+        m.vertices = points(*v, p / "vertices", "vertices");
+    const Json* faces = member(j, p, "faces", true);
+    if (!faces || !array(*faces, p / "faces", "faces")) return m;
+    for (std::size_t k = 0; k < faces->size(); ++k) {
+        const Json& face = (*faces)[k];
+        std::vector<int>& out = m.faces.emplace_back();
+        if (!array(face, p / "faces" / k, "a face")) continue;
+        for (std::size_t n = 0; n < face.size(); ++n) {
+            const auto index = integer(face[n], p / "faces" / k / n, "a face index", 0,
+                                       std::numeric_limits<int>::max());
+            out.push_back(index ? static_cast<int>(*index) : -1);
+        }
+    }
+    return m;
+}
+
+BoxGeometry SceneReader::box(const Json& j, const Ptr& p) {
+    BoxGeometry b;
+    if (!object(j, p, "box")) return b;
+    check_keys(j, p, {"min", "max", "facing"});
+    if (const Json* v = member(j, p, "min", true)) b.min = vec3(*v, p / "min", "min");
+    if (const Json* v = member(j, p, "max", true)) b.max = vec3(*v, p / "max", "max");
+    if (const Json* f = member(j, p, "facing", false)) {
+        if (*f == "in" || *f == "out") {
+            b.facing_in = *f == "in";
+        } else {
+            report(p / "facing", "facing must be \"in\" or \"out\"");
+        }
+    }
+    return b;
+}
+
+Luminaire SceneReader::luminaire(const Json& j, const Ptr& p) {
+    Luminaire l;
+    if (!object(j, p, "a luminaire")) return l;
+    check_keys(j, p, {"name", "position", "flux", "distribution", "aim", "color"});
+    if (const Json* n = member(j, p, "name", true)) l.name = string(*n, p / "name", "name");
+    if (const Json* v = member(j, p, "position", true))
+        l.position = vec3(*v, p / "position", "position");
+    if (const Json* f = member(j, p, "flux", true)) l.flux_lm = number(*f, p / "flux", "flux");
+    if (const Json* d = member(j, p, "distribution", false)) {
+        if (*d == "isotropic" || *d == "lambertian") {
+            l.distribution = *d == "isotropic" ? Distribution::isotropic : Distribution::lambertian;
+        } else if (d->is_object() && d->contains("ies")) {
+            report(p / "distribution", "IES distributions are not supported yet");
+        } else {
+            report(p / "distribution", "distribution must be \"isotropic\" or \"lambertian\"");
+        }
+    }
+    if (const Json* a = member(j, p, "aim", false)) l.aim = vec3(*a, p / "aim", "aim");
+    if (const Json* c = member(j, p, "color", false)) l.color = rgb(*c, p / "color", "color");
+    return l;
+}
+
+SensorSet SceneReader::sensor(const Json& j, const Ptr& p, std::size_t index) {
+    SensorSet s;
+    if (!object(j, p, "a sensor set")) return s;
+    check_keys(j, p, {"name", "normal", "points", "grid"});
+    if (const Json* n = member(j, p, "name", true)) s.name = string(*n, p / "name", "name");
+    if (const Json* n = member(j, p, "normal", true)) s.normal = vec3(*n, p / "normal", "normal");
+    if (j.contains("points") == j.contains("grid")) {
+        report(p, "a sensor set needs exactly one of points or grid");
+    } else if (j.contains("points")) {
+        s.points = points(j["points"], p / "points", "points");
+    } else {
+        grid_sensors_.insert(index);
+        s.points = grid(j["grid"], p / "grid");
+    }
+    return s;
+}
+
+/// Cell centres of the grid, row-major with u fastest (contract §2).
+std::vector<Vec3> SceneReader::grid(const Json& j, const Ptr& p) {
+    if (!object(j, p, "grid")) return {};
+    check_keys(j, p, {"origin", "u", "v", "nu", "nv"});
+    const std::size_t problems_before = problems_.size();
+    Vec3 origin, u, v;
+    std::optional<long long> nu, nv;
+    const auto max = static_cast<long long>(limits_.scene.max_sensor_points);
+    if (const Json* x = member(j, p, "origin", true)) origin = vec3(*x, p / "origin", "origin");
+    if (const Json* x = member(j, p, "u", true)) u = vec3(*x, p / "u", "u");
+    if (const Json* x = member(j, p, "v", true)) v = vec3(*x, p / "v", "v");
+    if (const Json* x = member(j, p, "nu", true)) nu = integer(*x, p / "nu", "nu", 1, max);
+    if (const Json* x = member(j, p, "nv", true)) nv = integer(*x, p / "nv", "nv", 1, max);
+    if (problems_.size() != problems_before || !nu || !nv) return {};
+    // Checked before expanding, so a hostile grid cannot exhaust memory.
+    if (*nu > max / *nv) {
+        report(p, "grid has " + std::to_string(*nu * *nv) + " points, over the limit of " +
+                      std::to_string(max));
+        return {};
+    }
+    std::vector<Vec3> out;
+    out.reserve(static_cast<std::size_t>(*nu * *nv));
+    for (long long jv = 0; jv < *nv; ++jv) {
+        for (long long iu = 0; iu < *nu; ++iu) {
+            out.push_back(origin + (static_cast<double>(iu) + 0.5) / static_cast<double>(*nu) * u +
+                          (static_cast<double>(jv) + 0.5) / static_cast<double>(*nv) * v);
+        }
+    }
+    return out;
+}
+
+Settings SceneReader::settings(const Json& j, const Ptr& p) {
+    Settings s;
+    if (!object(j, p, "settings")) return s;
+    check_keys(j, p, {"tolerance", "max_seconds", "method"});
+    if (const Json* t = member(j, p, "tolerance", false)) {
+        s.tolerance = number(*t, p / "tolerance", "tolerance");
+    }
+    if (const Json* t = member(j, p, "max_seconds", false)) {
+        s.max_seconds = number(*t, p / "max_seconds", "max_seconds");
+    }
+    if (const Json* m = member(j, p, "method", false)) {
+        static const std::set<std::string, std::less<>> methods{
+            "auto", "direct", "jacobi", "gauss-seidel", "shooting", "hierarchical"};
+        if (m->is_string() && methods.contains(m->get<std::string>())) {
+            s.method = m->get<std::string>();
+        } else {
+            report(p / "method",
+                   "method must be one of auto, direct, jacobi, gauss-seidel, shooting, "
+                   "hierarchical");
+        }
+    }
+    return s;
+}
+
+/// check_scene sees a grid only as its expanded points; point the user at the grid instead.
+std::string document_pointer(const std::string& pointer, const std::set<std::size_t>& grids) {
+    static const std::string prefix = "/sensors/";
+    if (pointer.rfind(prefix, 0) != 0) return pointer;
+    const std::size_t slash = pointer.find('/', prefix.size());
+    if (slash == std::string::npos || pointer.compare(slash, 7, "/points") != 0) return pointer;
+    const std::size_t index = std::stoul(pointer.substr(prefix.size(), slash - prefix.size()));
+    return grids.contains(index) ? pointer.substr(0, slash) + "/grid" : pointer;
+}
+
+}  // namespace
+
+ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits) {
+    ParseOutcome outcome;
+    if (json_text.size() > limits.max_bytes) {
+        outcome.problems.push_back({"", "the document is " + std::to_string(json_text.size()) +
+                                            " bytes, over the limit of " +
+                                            std::to_string(limits.max_bytes)});
+        return outcome;
+    }
+    auto parsed = parse_json_text(json_text);
+    if (auto* problem = std::get_if<Problem>(&parsed)) {
+        outcome.problems.push_back(std::move(*problem));
+        return outcome;
+    }
+    const Json& root = std::get<Json>(parsed);
+    if (!root.is_object()) {
+        outcome.problems.push_back({"", "a scene must be a JSON object"});
+        return outcome;
+    }
+    SceneReader reader(limits);
+    Scene scene = reader.read(root);
+    outcome.problems = std::move(reader.problems_);
+    // Placeholders for unreadable values would only produce echoes of the same problem.
+    for (Problem& p : check_scene(scene, limits.scene)) {
+        if (reader.broken_.contains(entity_of(p.pointer))) continue;
+        p.pointer = document_pointer(p.pointer, reader.grid_sensors_);
+        outcome.problems.push_back(std::move(p));
+    }
+    if (outcome.problems.empty()) outcome.scene = std::move(scene);
+    return outcome;
+}
+
+ParseOutcome load_scene_file(const std::filesystem::path& path, const ParseLimits& limits) {
+    auto unreadable = [&](const std::string& why) {
+        ParseOutcome outcome;
+        outcome.problems.push_back({"", "cannot read " + path.string() + ": " + why});
+        return outcome;
+    };
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) return unreadable(ec.message());
+    if (size > limits.max_bytes) {
+        ParseOutcome outcome;
+        outcome.problems.push_back({"", "the file is " + std::to_string(size) +
+                                            " bytes, over the limit of " +
+                                            std::to_string(limits.max_bytes)});
+        return outcome;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return unreadable("cannot open the file");
+    // One byte more than measured tells whether the file grew in between.
+    std::string text(static_cast<std::size_t>(size) + 1, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (in.bad()) return unreadable("read error");
+    if (static_cast<std::size_t>(in.gcount()) != size)
+        return unreadable("the file changed while it was read");
+    text.resize(static_cast<std::size_t>(size));
+    return parse_scene(text, limits);
+}
+
+std::string format_problem(const std::string& file, const Problem& problem) {
+    return file + ": " + problem.pointer + ": " + problem.message;
+}
+
+}  // namespace radiant::proto
