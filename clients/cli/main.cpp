@@ -1,0 +1,32 @@
+// radiant: solve or validate radiant-scene/1 files from the command line (contract §1).
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "exit_codes.h"
+#include "solve_command.h"
+#include "validate_command.h"
+
+int main(int argc, char** argv) {
+    int exit_code = radiant::cli::kExitOk;
+    try {
+        CLI::App app("Radiant radiosity lighting simulation", "radiant");
+        app.require_subcommand(1);
+        radiant::cli::add_solve_command(app, exit_code);
+        radiant::cli::add_validate_command(app, exit_code);
+        try {
+            app.parse(argc, argv);
+        } catch (const CLI::ParseError& e) {
+            // Usage errors are bad input (2); --help is a success.
+            return app.exit(e) == 0 ? radiant::cli::kExitOk : radiant::cli::kExitBadInput;
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "radiant: " << e.what() << '\n';
+        return radiant::cli::kExitFailure;
+    } catch (...) {
+        std::cerr << "radiant: unknown internal error\n";
+        return radiant::cli::kExitFailure;
+    }
+    return exit_code;
+}
