@@ -19,14 +19,17 @@ std::vector<QuadraturePoint> positive_rule(const std::vector<Vec3>& polygon, int
     return polygon_quadrature(polygon, 1);
 }
 
-// Distance from patch i to the nearest patch it can exchange light with, relative to its size.
+// Size of patch i over its distance to the nearest patch it exchanges light with at an angle.
+// Neighbours within ~25° of coplanar (facets of a curved surface) see each other at grazing
+// angles only, so they do not call for the fine rule the kernel singularity of a corner needs.
 double nearness(const PatchMesh& patches, std::size_t i) {
     const PatchGeometry& p = patches.patch(i);
     double nearest = 1e300;
     for (std::size_t j = 0; j < patches.size(); ++j) {
         if (j == i) continue;
         const PatchGeometry& q = patches.patch(j);
-        if (dot(q.centroid - p.centroid, p.normal) <= 1e-9 * p.diameter_m &&
+        if (dot(q.normal, p.normal) > 0.9) continue;
+        if (dot(q.centroid - p.centroid, p.normal) <= 1e-9 * p.diameter_m ||
             dot(p.centroid - q.centroid, q.normal) <= 1e-9 * p.diameter_m) {
             continue;
         }
@@ -61,7 +64,7 @@ std::vector<std::vector<QuadraturePoint>> receiver_rules(const PatchMesh& patche
         const auto& poly = patches.patch(i).vertices;
         const double ratio = nearness(patches, i);
         if (ratio < 0.5) {
-            rules[i] = positive_rule(poly, 3);
+            rules[i] = positive_rule(poly, 2);
         } else if (ratio < 1.5) {
             rules[i] = positive_rule(poly, 5);
         } else {

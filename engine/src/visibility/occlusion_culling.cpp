@@ -18,15 +18,41 @@ void extend(Vec3& lo, Vec3& hi, std::span<const Vec3> points) {
 
 }  // namespace
 
-OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_pieces)
+namespace {
+
+// A piece with all geometry, luminaires and sensors on or in front of its plane (a wall of a
+// convex room, a facet of a sphere) bounds the scene's convex hull: a segment between two points
+// in that closed half-space cannot cross it, so it never blocks anything.
+std::vector<int> potential_occluders(const PreparedScene& scene, double eps) {
+    std::vector<Vec3> points;
+    for (const Piece& p : scene.pieces) points.insert(points.end(), p.vertices.begin(), p.vertices.end());
+    for (const PreparedLuminaire& l : scene.luminaires) points.push_back(l.position);
+    for (const PreparedSensorSet& s : scene.sensors) points.insert(points.end(), s.points.begin(), s.points.end());
+    const std::size_t k = scene.pieces.size();
+    std::vector<char> occludes(k, 0);
+    tbb::parallel_for(std::size_t{0}, k, [&](std::size_t q) {
+        const Piece& p = scene.pieces[q];
+        occludes[q] = std::any_of(points.begin(), points.end(), [&](const Vec3& v) {
+            return dot(v - p.vertices[0], p.normal) < -eps;
+        });
+    });
+    std::vector<int> out;
+    for (std::size_t q = 0; q < k; ++q) {
+        if (occludes[q]) out.push_back(static_cast<int>(q));
+    }
+    return out;
+}
+
+}  // namespace
+
+OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_tests)
     : scene_(scene), eps_(1e-7 * scene.diagonal_m) {
     const std::size_t k = scene.pieces.size();
-    enabled_ = k <= max_pieces;
     lo_.assign(k, Vec3{1e300, 1e300, 1e300});
     hi_.assign(k, Vec3{-1e300, -1e300, -1e300});
     for (std::size_t i = 0; i < k; ++i) extend(lo_[i], hi_[i], scene.pieces[i].vertices);
-    all_.resize(k);
-    for (std::size_t i = 0; i < k; ++i) all_[i] = static_cast<int>(i);
+    occluders_ = potential_occluders(scene, eps_);
+    enabled_ = !occluders_.empty() && k * k <= max_tests / occluders_.size();
     if (!enabled_) return;
     pair_candidates_.resize(k * k);
     tbb::parallel_for(std::size_t{0}, k, [&](std::size_t a) {
@@ -37,11 +63,10 @@ OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_p
             Vec3 lo = lo_[a], hi = hi_[a];
             extend(lo, hi, pb.vertices);
             auto& list = pair_candidates_[a * k + b];
-            for (std::size_t q = 0; q < k; ++q) {
-                if (q == a || q == b) continue;
-                if (can_block(static_cast<int>(q), lo, hi, pa.vertices[0], pa.normal,
-                              pb.vertices[0], pb.normal)) {
-                    list.push_back(static_cast<int>(q));
+            for (const int q : occluders_) {
+                if (q == static_cast<int>(a) || q == static_cast<int>(b)) continue;
+                if (can_block(q, lo, hi, pa.vertices[0], pa.normal, pb.vertices[0], pb.normal)) {
+                    list.push_back(q);
                 }
             }
         }
@@ -68,7 +93,7 @@ bool OcclusionCulling::can_block(int q, const Vec3& lo, const Vec3& hi, const Ve
 }
 
 const std::vector<int>& OcclusionCulling::candidates(int a, int b) const {
-    if (!enabled_) return all_;
+    if (!enabled_) return occluders_;
     return pair_candidates_[static_cast<std::size_t>(a) * scene_.pieces.size() +
                             static_cast<std::size_t>(b)];
 }
@@ -91,9 +116,9 @@ bool OcclusionCulling::maybe_blocked_from_point(const Vec3& x, const Vec3& n, in
                                                 std::span<const Vec3> b, const Vec3& nb) const {
     Vec3 lo = x, hi = x;
     extend(lo, hi, b);
-    for (std::size_t q = 0; q < scene_.pieces.size(); ++q) {
-        if (static_cast<int>(q) == piece_b) continue;
-        if (can_block(static_cast<int>(q), lo, hi, x, n, b[0], nb)) return true;
+    for (const int q : occluders_) {
+        if (q == piece_b) continue;
+        if (can_block(q, lo, hi, x, n, b[0], nb)) return true;
     }
     return false;
 }

@@ -11,9 +11,13 @@ namespace radiant {
 
 class OcclusionCulling {
 public:
-    /// Precomputes, for every ordered pair of pieces, the pieces that might block between them.
-    /// Above `max_pieces` pieces it gives up (every pair may be occluded) to stay sub-cubic.
-    OcclusionCulling(const PreparedScene& scene, std::size_t max_pieces = 600);
+    /// Finds the pieces that can block anything at all, then precomputes for every ordered pair
+    /// of pieces those that might block between them, unless that would take more than
+    /// `max_tests` plane tests (then every potential occluder is a candidate for every pair).
+    explicit OcclusionCulling(const PreparedScene& scene, std::size_t max_tests = 200'000'000);
+
+    /// Pieces that might block some segment (those not on the scene's convex hull).
+    std::size_t occluder_count() const { return occluders_.size(); }
 
     /// True when some piece might block a segment between points of polygons a and b, which lie
     /// on pieces piece_a and piece_b with unit normals na and nb (front sides facing each other).
@@ -34,7 +38,7 @@ private:
     bool enabled_;
     std::vector<Vec3> lo_, hi_;
     std::vector<std::vector<int>> pair_candidates_;  // [a * k + b]
-    std::vector<int> all_;
+    std::vector<int> occluders_;
 };
 
 }  // namespace radiant
