@@ -73,12 +73,13 @@ OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_t
     });
 }
 
-// q cannot block when it is entirely behind (or on) either end's plane, or when its bounding box
-// does not overlap the shaft's bounding box with positive volume.
+// q cannot block when it is entirely behind (or on) either end's plane, or when it lies outside
+// (or on) one face of the shaft's bounding box. A flat q inside the box does block: only the
+// box's faces, not a zero-volume overlap, decide.
 bool OcclusionCulling::can_block(int q, const Vec3& lo, const Vec3& hi, const Vec3& pa,
                                  const Vec3& na, const Vec3& pb, const Vec3& nb) const {
     for (int a = 0; a < 3; ++a) {
-        if (std::min(hi[a], hi_[q][a]) - std::max(lo[a], lo_[q][a]) <= eps_) return false;
+        if (hi_[q][a] <= lo[a] + eps_ || lo_[q][a] >= hi[a] - eps_) return false;
     }
     const auto& v = scene_.pieces[static_cast<std::size_t>(q)].vertices;
     // A zero normal (a point luminaire) restricts nothing on that end.
