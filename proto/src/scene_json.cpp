@@ -1,5 +1,6 @@
 #include "radiant/proto/scene_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
@@ -8,6 +9,7 @@
 #include <sstream>
 
 #include "json_text.h"
+#include "radiant/solve.h"
 
 namespace radiant::proto {
 namespace {
@@ -386,14 +388,15 @@ Settings SceneReader::settings(const Json& j, const Ptr& p) {
         s.max_seconds = number(*t, p / "max_seconds", "max_seconds");
     }
     if (const Json* m = member(j, p, "method", false)) {
-        static const std::set<std::string, std::less<>> methods{
-            "auto", "direct", "jacobi", "gauss-seidel", "shooting", "hierarchical"};
-        if (m->is_string() && methods.contains(m->get<std::string>())) {
+        // The engine's own list, so the parser never accepts a method the engine lacks.
+        const auto& methods = solver_names();
+        if (m->is_string() &&
+            std::find(methods.begin(), methods.end(), m->get<std::string>()) != methods.end()) {
             s.method = m->get<std::string>();
         } else {
-            report(p / "method",
-                   "method must be one of auto, direct, jacobi, gauss-seidel, shooting, "
-                   "hierarchical");
+            std::string list;
+            for (const auto& name : methods) list += (list.empty() ? "" : ", ") + name;
+            report(p / "method", "method must be one of " + list);
         }
     }
     return s;

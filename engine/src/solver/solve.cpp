@@ -85,7 +85,7 @@ std::vector<Triangle> occluder_triangles(const PreparedScene& scene) {
 }
 
 std::string choose_method(const std::string& requested, std::size_t patches) {
-    if (requested != "auto" && requested != "hierarchical") return requested;
+    if (requested != "auto") return requested;
     return patches <= kMaxAutoDirectPatches ? "direct" : "gauss-seidel";
 }
 
@@ -307,8 +307,8 @@ SolveOptions options_from(const Settings& settings) {
 }
 
 const std::vector<std::string>& solver_names() {
-    static const std::vector<std::string> names{"auto",     "direct",      "jacobi",
-                                                "gauss-seidel", "shooting", "hierarchical"};
+    static const std::vector<std::string> names{"auto", "direct", "jacobi", "gauss-seidel",
+                                                "shooting"};
     return names;
 }
 
