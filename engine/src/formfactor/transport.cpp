@@ -59,10 +59,9 @@ bool Transport::faces_each_other(std::size_t i, std::size_t j) const {
     return b_in_front_of_a && a_in_front_of_b;
 }
 
-double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j,
+double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, int m,
                                    std::uint64_t key, std::uint64_t& rays) const {
     const PatchGeometry& src = patches_.patch(j);
-    const int m = patch_emits(j) ? options_.emitter_rays_per_point : options_.rays_per_point;
     SampleStream rng(options_.seed, key, j);
     std::vector<double> u(2 * static_cast<std::size_t>(m));
     for (double& v : u) v = rng.next();
@@ -82,13 +81,16 @@ double Transport::point_to_patch(const Vec3& x, const Vec3& n, std::size_t j, st
     const double f = point_to_polygon_factor(x, n, src.vertices);
     if (f <= 0) return 0;
     if (!culling_.maybe_blocked_from_point(x, n, src.piece, src.vertices, src.normal)) return f;
-    return f * visible_fraction(x, n, j, key, rays);
+    const int m = patch_emits(j) ? options_.emitter_rays_per_point : options_.rays_per_point;
+    return f * visible_fraction(x, n, j, m, key, rays);
 }
 
 void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays) const {
     const PatchGeometry& rcv = patches_.patch(i);
     const auto& rule = rules_[i];
     const std::size_t n = patches_.size();
+    const int per_point = std::max(
+        1, (options_.rays_per_link + static_cast<int>(rule.size()) - 1) / static_cast<int>(rule.size()));
     for (std::size_t j = 0; j < n; ++j) {
         row[j] = 0.0f;
         if (j == i || !faces_each_other(i, j)) continue;
@@ -100,7 +102,7 @@ void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays) 
             const QuadraturePoint& q = rule[k];
             double f = point_to_polygon_factor(q.position, rcv.normal, src.vertices);
             if (blocked && f > 0) {
-                f *= visible_fraction(q.position, rcv.normal, j,
+                f *= visible_fraction(q.position, rcv.normal, j, per_point,
                                       (static_cast<std::uint64_t>(i) << 20) ^ k, rays);
             }
             sum += q.weight * f;

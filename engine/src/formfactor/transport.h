@@ -17,8 +17,12 @@
 namespace radiant {
 
 struct TransportOptions {
-    int rays_per_point = 4;           ///< shadow rays from a receiver point to a patch
-    int emitter_rays_per_point = 16;  ///< to emitting patches and luminaires, where it shows most
+    /// Shadow rays per patch-to-patch link, spread over the receiver's quadrature points (at
+    /// least one each): stratified over both patches, so a blocker covering a fraction f of
+    /// the shaft is missed with probability about (1−f)^N.
+    int rays_per_link = 16;
+    int rays_per_point = 4;           ///< from a sensor point to a patch
+    int emitter_rays_per_point = 16;  ///< to emitting patches, where visibility shows most
     std::uint64_t seed = 1;
 };
 
@@ -49,8 +53,8 @@ private:
     bool faces_each_other(std::size_t i, std::size_t j) const;
     bool patch_emits(std::size_t j) const;
     /// Fraction of stratified shadow rays from x (lifted along n) that reach patch j.
-    double visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
-                            std::uint64_t& rays) const;
+    double visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, int ray_count,
+                            std::uint64_t key, std::uint64_t& rays) const;
 
     const PreparedScene& scene_;
     const PatchMesh& patches_;
