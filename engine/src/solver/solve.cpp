@@ -26,6 +26,9 @@ using Clock = std::chrono::steady_clock;
 // Above this many patches the dense solvers' n² memory and time stop paying; the patch size
 // grows instead (the hierarchical solver is the answer for larger models).
 constexpr std::size_t kMaxDensePatches = 3000;
+// A model with more polygons than this cannot be meshed within the dense solvers' budget
+// (one patch per polygon at least); it needs the hierarchical solver, so it is refused clearly.
+constexpr std::size_t kMaxDensePolygons = 6000;
 // LU (O(n³)) beats iteration up to about here on two cores, at any reflectance.
 constexpr std::size_t kMaxAutoDirectPatches = 1500;
 
@@ -97,6 +100,12 @@ Result Pipeline::run() {
     const PreparedScene prepared = prepare_scene(scene_);
     if (prepared.pieces.empty()) {
         result.error = "the scene has no surface with a non-zero area";
+        return result;
+    }
+    if (prepared.pieces.size() > kMaxDensePolygons) {
+        result.error = "the scene has " + std::to_string(prepared.pieces.size()) +
+                       " convex polygons; the dense solvers handle at most " +
+                       std::to_string(kMaxDensePolygons);
         return result;
     }
     omerr().disable();  // T-junction fallbacks are expected, not errors to print
