@@ -28,17 +28,25 @@ double flux_fraction_on(const PreparedLuminaire& l, std::span<const Vec3> polygo
     return point_to_polygon_factor(l.position, l.aim, polygon);
 }
 
+// Sources emit from their front only: a point behind the source's plane gets nothing, even when
+// the rest of its patch (straddling the plane's line) is in front.
+double front_factor(const Vec3& x, const Vec3& n, const PatchGeometry& src) {
+    if (dot(x - src.vertices[0], src.normal) <= 0) return 0;
+    return point_to_polygon_factor(x, n, src.vertices);
+}
+
 }  // namespace
 
 Transport::Transport(const PreparedScene& scene, const PatchMesh& patches,
                      const Visibility& visibility, const OcclusionCulling& culling,
-                     TransportOptions options)
+                     TransportOptions options, std::vector<char> enclosed)
     : scene_(scene),
       patches_(patches),
       visibility_(visibility),
       culling_(culling),
       options_(options),
-      rules_(receiver_rules(patches)) {}
+      rules_(receiver_rules(patches)),
+      enclosed_(std::move(enclosed)) {}
 
 bool Transport::patch_emits(std::size_t j) const {
     const PatchGeometry& p = patches_.patch(j);
@@ -77,8 +85,7 @@ double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, 
 double Transport::point_to_patch(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
                                  std::uint64_t& rays) const {
     const PatchGeometry& src = patches_.patch(j);
-    if (dot(x - src.vertices[0], src.normal) <= 0) return 0;  // behind the source: it emits forward
-    const double f = point_to_polygon_factor(x, n, src.vertices);
+    const double f = front_factor(x, n, src);
     if (f <= 0) return 0;
     if (!culling_.maybe_blocked_from_point(x, n, src.piece, src.vertices, src.normal)) return f;
     const int m = patch_emits(j) ? options_.emitter_rays_per_point : options_.rays_per_point;
@@ -89,25 +96,51 @@ void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays) 
     const PatchGeometry& rcv = patches_.patch(i);
     const auto& rule = rules_[i];
     const std::size_t n = patches_.size();
+    const std::size_t points = rule.size();
     const int per_point = std::max(
-        1, (options_.rays_per_link + static_cast<int>(rule.size()) - 1) / static_cast<int>(rule.size()));
+        1, (options_.rays_per_link + static_cast<int>(points) - 1) / static_cast<int>(points));
+    // Unoccluded sources are exact; occluded ones are sampled per receiver point and kept apart
+    // so that an enclosed receiver can complete them to 1 point by point.
+    std::vector<double> clear_sum(points, 0.0), sampled_sum(points, 0.0);
+    std::vector<std::size_t> sampled_sources;
+    std::vector<double> sampled;  // [m * points + k]
     for (std::size_t j = 0; j < n; ++j) {
         row[j] = 0.0f;
         if (j == i || !faces_each_other(i, j)) continue;
         const PatchGeometry& src = patches_.patch(j);
         const bool blocked = culling_.maybe_blocked(rcv.piece, rcv.vertices, rcv.normal, src.piece,
                                                     src.vertices, src.normal);
-        double sum = 0;
-        for (std::size_t k = 0; k < rule.size(); ++k) {
-            const QuadraturePoint& q = rule[k];
-            double f = point_to_polygon_factor(q.position, rcv.normal, src.vertices);
-            if (blocked && f > 0) {
-                f *= visible_fraction(q.position, rcv.normal, j, per_point,
+        if (!blocked) {
+            double sum = 0;
+            for (std::size_t k = 0; k < points; ++k) {
+                const double f = front_factor(rule[k].position, rcv.normal, src);
+                clear_sum[k] += f;
+                sum += rule[k].weight * f;
+            }
+            row[j] = static_cast<float>(sum / rcv.area_m2);
+            continue;
+        }
+        sampled_sources.push_back(j);
+        for (std::size_t k = 0; k < points; ++k) {
+            double f = front_factor(rule[k].position, rcv.normal, src);
+            if (f > 0) {
+                f *= visible_fraction(rule[k].position, rcv.normal, j, per_point,
                                       (static_cast<std::uint64_t>(i) << 20) ^ k, rays);
             }
-            sum += q.weight * f;
+            sampled.push_back(f);
+            sampled_sum[k] += f;
         }
-        row[j] = static_cast<float>(sum / rcv.area_m2);
+    }
+    std::vector<double> scale(points, 1.0);
+    if (enclosed_[i]) {
+        for (std::size_t k = 0; k < points; ++k) {
+            if (sampled_sum[k] > 0) scale[k] = std::max(0.0, 1.0 - clear_sum[k]) / sampled_sum[k];
+        }
+    }
+    for (std::size_t m = 0; m < sampled_sources.size(); ++m) {
+        double sum = 0;
+        for (std::size_t k = 0; k < points; ++k) sum += rule[k].weight * scale[k] * sampled[m * points + k];
+        row[sampled_sources[m]] = static_cast<float>(sum / rcv.area_m2);
     }
 }
 

@@ -29,8 +29,11 @@ struct TransportOptions {
 /// Everything a transport query needs; immutable after construction, shared by threads.
 class Transport {
 public:
+    /// `enclosed` (see enclosed_patches) marks the receivers whose sampled form factors are
+    /// rescaled, point by point, so that they complete the exact unoccluded ones to 1.
     Transport(const PreparedScene& scene, const PatchMesh& patches, const Visibility& visibility,
-              const OcclusionCulling& culling, TransportOptions options);
+              const OcclusionCulling& culling, TransportOptions options,
+              std::vector<char> enclosed);
 
     /// F(x→P_j)·V̂ for a point x with unit normal n: the fraction of a cosine-weighted hemisphere
     /// at x covered by patch j. `key` seeds the ray samples. Counts rays into `rays`.
@@ -62,6 +65,7 @@ private:
     const OcclusionCulling& culling_;
     TransportOptions options_;
     std::vector<std::vector<QuadraturePoint>> rules_;
+    std::vector<char> enclosed_;
 };
 
 }  // namespace radiant

@@ -29,9 +29,13 @@ std::vector<Point2> project(std::span<const Vec3> polygon, const Vec3& n) {
     return out;
 }
 
+// Closed test: a reflex vertex exactly on an ear's diagonal must block that ear, or the cut
+// runs through the vertex and the pieces overlap.
 bool inside_triangle(const Point2& p, const Point2& a, const Point2& b, const Point2& c) {
-    return cross2(a, b, p) > 0 && cross2(b, c, p) > 0 && cross2(c, a, p) > 0;
+    return cross2(a, b, p) >= 0 && cross2(b, c, p) >= 0 && cross2(c, a, p) >= 0;
 }
+
+bool same(const Point2& a, const Point2& b) { return a.u == b.u && a.v == b.v; }
 
 }  // namespace
 
@@ -66,6 +70,7 @@ std::vector<std::vector<Vec3>> triangulate(std::span<const Vec3> polygon, const 
             bool empty = true;
             for (const int j : idx) {
                 if (j == ia || j == ib || j == ic) continue;
+                if (same(p[j], p[ia]) || same(p[j], p[ib]) || same(p[j], p[ic])) continue;
                 if (inside_triangle(p[j], p[ia], p[ib], p[ic])) {
                     empty = false;
                     break;

@@ -26,13 +26,14 @@ ContractionNorms contraction_norms(const LinearSystem& s, int channel) {
 
 double relative_error_bound(const ContractionNorms& q, double r_inf, double r_area_l1,
                             double sum_area_radiosity, double total_area_m2) {
-    constexpr double kHuge = 1e30;
+    constexpr double kUnknown = 1e30;  // neither norm contracts: no bound can be given
     if (r_inf == 0 && r_area_l1 == 0) return 0;
-    double bound = kHuge;
+    if (!(q.q_inf < 1) && !(q.q_1 < 1)) return kUnknown;
+    if (!(sum_area_radiosity > 0)) return kUnknown;
+    double bound = std::numeric_limits<double>::infinity();
     if (q.q_inf < 1) bound = std::min(bound, total_area_m2 * r_inf / (1 - q.q_inf));
     if (q.q_1 < 1) bound = std::min(bound, r_area_l1 / (1 - q.q_1));
-    if (!(sum_area_radiosity > 0)) return kHuge;
-    return std::min(kHuge, bound / sum_area_radiosity);
+    return std::min(kUnknown, bound / sum_area_radiosity);
 }
 
 }  // namespace radiant

@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "formfactor/enclosure.h"
 #include "formfactor/transport.h"
 #include "meshing/patch_mesh.h"
 #include "scene/prepared_scene.h"
@@ -77,14 +78,18 @@ void Pipeline::report(const std::string& stage, double fraction, std::size_t ite
     observer_->on_progress(p);
 }
 
-std::vector<Triangle> occluder_triangles(const PreparedScene& scene) {
+// All pieces as triangle fans, and the piece of each triangle.
+std::pair<std::vector<Triangle>, std::vector<int>> occluder_triangles(const PreparedScene& scene) {
     std::vector<Triangle> tris;
-    for (const Piece& p : scene.pieces) {
-        for (std::size_t k = 1; k + 1 < p.vertices.size(); ++k) {
-            tris.push_back({p.vertices[0], p.vertices[k], p.vertices[k + 1]});
+    std::vector<int> piece;
+    for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
+        const auto& v = scene.pieces[i].vertices;
+        for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+            tris.push_back({v[0], v[k], v[k + 1]});
+            piece.push_back(static_cast<int>(i));
         }
     }
-    return tris;
+    return {tris, piece};
 }
 
 std::string choose_method(const std::string& requested, std::size_t patches) {
@@ -113,12 +118,14 @@ Result Pipeline::run() {
     const std::size_t n = patches.size();
     const int channels = prepared.channels;
 
-    const std::vector<Triangle> triangles = occluder_triangles(prepared);
+    const auto [triangles, triangle_piece] = occluder_triangles(prepared);
     const auto visibility = make_embree_visibility(triangles);
     const OcclusionCulling culling(prepared);
     TransportOptions transport_options;
     transport_options.seed = options_.seed;
-    const Transport transport(prepared, patches, *visibility, culling, transport_options);
+    const Transport transport(
+        prepared, patches, *visibility, culling, transport_options,
+        enclosed_patches(prepared, patches, *visibility, triangle_piece, options_.seed));
 
     // Form factors, one receiver row per task; rays counted per thread.
     report("form factors", 0.05);

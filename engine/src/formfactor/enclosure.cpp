@@ -1,0 +1,51 @@
+#include "formfactor/enclosure.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <tbb/parallel_for.h>
+
+#include "formfactor/quadrature.h"
+#include "geometry/random.h"
+
+namespace radiant {
+namespace {
+
+// Cosine-distributed direction about unit n from two uniform numbers (Malley's method).
+Vec3 cosine_direction(const Vec3& n, double r1, double r2) {
+    const Vec3 t = normalized(std::abs(n.x) < 0.9 ? cross(n, Vec3{1, 0, 0}) : cross(n, Vec3{0, 1, 0}));
+    const Vec3 b = cross(n, t);
+    const double s = std::sqrt(r1), phi = 2 * std::numbers::pi * r2;
+    return t * (s * std::cos(phi)) + b * (s * std::sin(phi)) + n * std::sqrt(1 - r1);
+}
+
+}  // namespace
+
+std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& patches,
+                                   const Visibility& visibility,
+                                   std::span<const int> triangle_piece, std::uint64_t seed,
+                                   int rays_per_patch) {
+    std::vector<char> enclosed(patches.size(), 0);
+    const double eps = visibility.epsilon();
+    const double reach = 4 * scene.diagonal_m + 1;
+    tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t i) {
+        const PatchGeometry& p = patches.patch(i);
+        SampleStream rng(seed, 0x656e636cull, i);
+        std::vector<double> u(2 * static_cast<std::size_t>(rays_per_patch));
+        for (double& v : u) v = rng.next();
+        const std::vector<Vec3> origins = stratified_points(p.vertices, rays_per_patch, u);
+        for (const Vec3& x : origins) {
+            const Vec3 dir = cosine_direction(p.normal, rng.next(), rng.next());
+            const int hit = visibility.first_hit(x + p.normal * eps, dir, reach);
+            if (hit < 0) return;
+            const Piece& q = scene.pieces[static_cast<std::size_t>(triangle_piece[static_cast<std::size_t>(hit)])];
+            if (dot(dir, q.normal) >= 0 && !scene.materials[static_cast<std::size_t>(q.material)].two_sided) {
+                return;
+            }
+        }
+        enclosed[i] = 1;
+    });
+    return enclosed;
+}
+
+}  // namespace radiant

@@ -1,0 +1,23 @@
+// Which patches look into a closed enclosure? From such a patch every direction ends on the
+// front of some patch, so the visible form factors at each of its points sum to exactly 1 — a
+// constraint that sampled visibility alone keeps only to ~1e-3, and that ρ/(1−ρ) amplifies.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "meshing/patch_mesh.h"
+#include "visibility/visibility.h"
+
+namespace radiant {
+
+/// enclosed[i] = 1 when `rays_per_patch` cosine-distributed rays from stratified points of
+/// patch i all land on a patch front (a one-sided piece's back, or nothing, makes it 0).
+/// `triangle_piece` maps the visibility's triangles to pieces. Deterministic in `seed`.
+std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& patches,
+                                   const Visibility& visibility,
+                                   std::span<const int> triangle_piece, std::uint64_t seed,
+                                   int rays_per_patch = 16);
+
+}  // namespace radiant
