@@ -7,6 +7,9 @@
 namespace radiant {
 namespace {
 
+// Beyond this many occluders a point query casts rays rather than testing each one.
+constexpr std::size_t kMaxPointTests = 256;
+
 void extend(Vec3& lo, Vec3& hi, std::span<const Vec3> points) {
     for (const Vec3& v : points) {
         for (int a = 0; a < 3; ++a) {
@@ -94,13 +97,14 @@ bool OcclusionCulling::can_block(int q, const Vec3& lo, const Vec3& hi, const Ve
 }
 
 const std::vector<int>& OcclusionCulling::candidates(int a, int b) const {
-    if (!enabled_) return occluders_;
     return pair_candidates_[static_cast<std::size_t>(a) * scene_.pieces.size() +
                             static_cast<std::size_t>(b)];
 }
 
 bool OcclusionCulling::maybe_blocked(int piece_a, std::span<const Vec3> a, const Vec3& na,
                                      int piece_b, std::span<const Vec3> b, const Vec3& nb) const {
+    // Without the pair lists, testing every occluder per pair would cost more than the rays.
+    if (!enabled_) return !occluders_.empty();
     const auto& list = candidates(piece_a, piece_b);
     if (list.empty()) return false;
     Vec3 lo = a[0], hi = a[0];
@@ -115,6 +119,7 @@ bool OcclusionCulling::maybe_blocked(int piece_a, std::span<const Vec3> a, const
 
 bool OcclusionCulling::maybe_blocked_from_point(const Vec3& x, const Vec3& n, int piece_b,
                                                 std::span<const Vec3> b, const Vec3& nb) const {
+    if (occluders_.size() > kMaxPointTests) return true;
     Vec3 lo = x, hi = x;
     extend(lo, hi, b);
     for (const int q : occluders_) {
