@@ -298,14 +298,18 @@ PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) 
     }
 }
 
-// Vertices are shared between the patches of one piece side only, never across surfaces, so
-// Gouraud shading never blends light across a crease or between objects. Where sharing would
+// Vertices are shared between the patches of coplanar pieces of one surface side only, never
+// across surfaces or creases, so Gouraud shading never blends light between objects. Where sharing would
 // make a vertex non-manifold (T-junctions from contact splits), the face gets its own vertices
 // so that face i stays patch i.
 void PatchMesh::add_face(const PatchGeometry& patch, VertexIndex& index) {
     std::vector<PolyMesh::VertexHandle> handles;
     for (const Vec3& v : patch.vertices) {
-        const auto key = std::make_tuple(patch.piece, patch.back_side, v.x, v.y, v.z);
+        // Pieces of one planar polygon have normals equal up to rounding: 1e-9 buckets.
+        const auto plane = std::make_tuple(std::llround(patch.normal.x * 1e9),
+                                           std::llround(patch.normal.y * 1e9),
+                                           std::llround(patch.normal.z * 1e9));
+        const auto key = std::make_tuple(patch.surface, patch.back_side, plane, v.x, v.y, v.z);
         auto it = index.find(key);
         if (it == index.end()) {
             it = index.emplace(key, mesh_.add_vertex(PolyMesh::Point(v.x, v.y, v.z))).first;

@@ -65,7 +65,9 @@ private:
     std::vector<double>& prop(DoubleProp h) { return mesh_.property(h).data_vector(); }
     const std::vector<double>& prop(DoubleProp h) const { return mesh_.property(h).data_vector(); }
     using VertexIndex =
-        std::map<std::tuple<int, bool, double, double, double>, PolyMesh::VertexHandle>;
+        std::map<std::tuple<int, bool, std::tuple<long long, long long, long long>, double, double,
+                            double>,
+                 PolyMesh::VertexHandle>;
     void add_face(const PatchGeometry& patch, VertexIndex& index);
 
     PolyMesh mesh_;

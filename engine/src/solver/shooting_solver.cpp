@@ -112,6 +112,7 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
         const auto ci = static_cast<std::size_t>(c);
         out.radiosity[ci].resize(n);
         for (std::size_t i = 0; i < n; ++i) out.radiosity[ci][i] = std::max(0.0, shot[ci][i] + unshot[ci][i]);
+        out.unshot[ci] = std::move(unshot[ci]);
     }
     return out;
 }

@@ -197,6 +197,7 @@ Result Pipeline::run() {
         auto& b = patches.radiosity(c);
         auto& h = patches.irradiance(c);
         b = outcome.radiosity[ci];
+        patches.unshot(c) = outcome.unshot[ci].empty() ? std::vector<double>(n, 0.0) : outcome.unshot[ci];
         h.assign(n, 0.0);
         tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
             double g = 0;
