@@ -15,47 +15,6 @@ namespace radiant {
 
 namespace {
 
-// Test-local brute-force oracle (the engine's implementations live elsewhere): double-precision
-// Möller–Trumbore with inclusive edges, so rays through a shared edge never slip between faces.
-class BruteForce final : public Visibility {
-  public:
-    explicit BruteForce(std::vector<Triangle> triangles)
-        : Visibility(1e-9), triangles_(std::move(triangles)) {}
-
-    bool visible(const Vec3& from, const Vec3& to) const override {
-        return first_hit(from, to - from, 1.0 - 1e-9) < 0;
-    }
-
-    int first_hit(const Vec3& origin, const Vec3& direction, double t_max) const override {
-        int best = -1;
-        double best_t = t_max;
-        for (std::size_t i = 0; i < triangles_.size(); ++i) {
-            const double t = intersect(triangles_[i], origin, direction);
-            if (t > 0.0 && t <= best_t) {
-                best_t = t;
-                best = static_cast<int>(i);
-            }
-        }
-        return best;
-    }
-
-  private:
-    static double intersect(const Triangle& tri, const Vec3& o, const Vec3& d) {
-        const Vec3 e1 = tri.b - tri.a, e2 = tri.c - tri.a;
-        const Vec3 p = cross(d, e2);
-        const double det = dot(e1, p);
-        if (det == 0.0) return -1.0;
-        const Vec3 s = o - tri.a;
-        const double u = dot(s, p) / det;
-        const Vec3 q = cross(s, e1);
-        const double v = dot(d, q) / det;
-        if (u < 0.0 || v < 0.0 || u + v > 1.0) return -1.0;
-        return dot(e2, q) / det;
-    }
-
-    std::vector<Triangle> triangles_;
-};
-
 using Quad = std::array<Vec3, 4>;
 
 // Unit cube faces with inward normals: floor, ceiling, y = 0, y = 1, x = 0, x = 1.
@@ -84,7 +43,8 @@ struct Scene {
 
 TEST(Hemicube, PointFactorsMatchLambertInsideCube) {
     const Scene scene;
-    const BruteForce vis(scene.triangles);
+    const auto vis_ptr = make_brute_force_visibility(scene.triangles);
+    const Visibility& vis = *vis_ptr;
     struct Probe {
         Vec3 x, n;
     };
@@ -107,7 +67,8 @@ TEST(Hemicube, PointFactorsMatchLambertInsideCube) {
 TEST(Hemicube, AreaAveragedCubeFactors) {
     // Hemicubes at degree-5 points of the floor split 2 × 2 (points off the shared edges).
     const Scene scene;
-    const BruteForce vis(scene.triangles);
+    const auto vis_ptr = make_brute_force_visibility(scene.triangles);
+    const Visibility& vis = *vis_ptr;
     std::array<double, 6> sum{};
     for (int i = 0; i < 2; ++i) {
         for (int j = 0; j < 2; ++j) {
@@ -129,7 +90,8 @@ TEST(Hemicube, AreaAveragedCubeFactors) {
 
 TEST(Hemicube, UnmappedTrianglesAndZeroNormalAreIgnored) {
     const Scene scene;
-    const BruteForce vis(scene.triangles);
+    const auto vis_ptr = make_brute_force_visibility(scene.triangles);
+    const Visibility& vis = *vis_ptr;
     const std::vector<int> none(scene.triangles.size(), -1);
     for (const double f : hemicube_factors({0.5, 0.5, 0.5}, {0, 0, 1}, 16, vis, none, 6)) {
         EXPECT_EQ(f, 0.0);
