@@ -1,0 +1,20 @@
+# Runs radiant-bench on one small scene with one method; fails unless it exits 0, prints the
+# Markdown header and one row, and writes the CSV.
+file(REMOVE ${CSV})
+execute_process(COMMAND ${BENCH} --scenes parallel-squares-d1 --methods direct --csv ${CSV}
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "radiant-bench exited with ${rc}")
+endif()
+string(FIND "${out}" "| scene | method | tolerance | seconds | rays | patches | iterations | error estimate | true error |" header)
+if(header EQUAL -1)
+  message(FATAL_ERROR "the table header was not printed")
+endif()
+string(FIND "${out}" "| parallel-squares-d1 | direct |" row)
+if(row EQUAL -1)
+  message(FATAL_ERROR "no row for parallel-squares-d1 / direct")
+endif()
+if(NOT EXISTS ${CSV})
+  message(FATAL_ERROR "--csv did not write ${CSV}")
+endif()

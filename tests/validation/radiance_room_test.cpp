@@ -1,0 +1,66 @@
+// room-s2 (a 4 × 4 × 3 m room with a flush 1000 lm ceiling panel) against the RADIANCE reference
+// (shared/validation/radiance/README.md): 81 work-plane illuminances at default settings.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "scene_files.h"
+
+namespace radiant {
+namespace {
+
+using testing::data_path;
+
+std::vector<double> reference_illuminance() {
+    std::ifstream in(data_path("radiance/room-s2.reference.csv"));
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "x,y,z,irradiance");
+    std::vector<double> values;
+    while (std::getline(in, line)) {
+        if (!line.empty()) values.push_back(std::stod(line.substr(line.rfind(',') + 1)));
+    }
+    return values;
+}
+
+TEST(RadianceRoom, WorkPlaneWithinThreePercentNormalisedRms) {
+    const Scene scene = testing::load_scene(data_path("radiance/room-s2.json"));
+    const std::vector<double> reference = reference_illuminance();
+    ASSERT_EQ(reference.size(), 81u);
+
+    const Result result = solve(scene, options_from(scene.settings));
+    ASSERT_EQ(result.status, SolveStatus::converged) << result.error;
+    const auto* plane = testing::find_sensor(result, "workplane");
+    ASSERT_NE(plane, nullptr);
+    ASSERT_EQ(plane->illuminance.size(), reference.size());
+
+    double sum_sq = 0, sum_ref = 0, max_rel = 0;
+    std::size_t worst = 0;
+    for (std::size_t i = 0; i < reference.size(); ++i) {
+        const double got = plane->illuminance[i];
+        ASSERT_TRUE(std::isfinite(got)) << "point " << i;
+        sum_sq += (got - reference[i]) * (got - reference[i]);
+        sum_ref += reference[i];
+        const double rel = std::abs(got / reference[i] - 1.0);
+        if (rel > max_rel) {
+            max_rel = rel;
+            worst = i;
+        }
+    }
+    const double n = static_cast<double>(reference.size());
+    const double nrms = std::sqrt(sum_sq / n) / (sum_ref / n);
+    EXPECT_LE(nrms, 0.03) << "normalised RMS error " << nrms * 100 << " %; max relative error "
+                          << max_rel * 100 << " % at point " << worst << " (got "
+                          << plane->illuminance[worst] << " lx, reference " << reference[worst]
+                          << " lx); " << result.stats.patches << " patches, "
+                          << result.stats.seconds << " s";
+    RecordProperty("nrms_percent", std::to_string(nrms * 100));
+    RecordProperty("max_relative_percent", std::to_string(max_rel * 100));
+}
+
+}  // namespace
+}  // namespace radiant
