@@ -69,10 +69,6 @@ INSTANTIATE_TEST_SUITE_P(
 // to overlap the shaft's with positive volume on all three axes, so a flat axis-aligned occluder
 // (zero extent along its normal) is never a candidate and no shadow ray is cast at all. Tests of
 // occluded scenes skip (with their measured numbers) only while that signature, rays == 0, holds.
-constexpr const char* kNoShadowRays =
-    "engine bug: no shadow ray cast (stats.rays == 0) although the scene has occluders; "
-    "OcclusionCulling::can_block rejects flat axis-aligned occluders (zero bbox overlap <= eps)";
-
 TEST(FurnaceRoomWithBox, BothClosedSurfacesAtTenTimesE) {
     Scene scene;
     scene.name = "furnace-room-box";
@@ -88,7 +84,6 @@ TEST(FurnaceRoomWithBox, BothClosedSurfacesAtTenTimesE) {
         "room B " + std::to_string(room->average_radiosity) + ", block B " +
         std::to_string(block->average_radiosity) + " (exact 10); absorbed/emitted " +
         std::to_string(r.stats.absorbed_flux_lm / r.stats.emitted_flux_lm) + "; " + describe(r);
-    if (r.stats.rays == 0) GTEST_SKIP() << kNoShadowRays << "; " << measured;
     ASSERT_EQ(r.status, SolveStatus::converged) << measured;
     EXPECT_NEAR(room->average_radiosity / 10.0, 1.0, 0.01) << measured;
     EXPECT_NEAR(block->average_radiosity / 10.0, 1.0, 0.01) << measured;
@@ -268,7 +263,6 @@ TEST_P(SealedNeighbour, NoLightInRoomB) {
              << " lx (ratios " << b->max / a->average << ", " << edge->max / a->average
              << ", limit 1e-6); absorbed/emitted "
              << r.stats.absorbed_flux_lm / r.stats.emitted_flux_lm << "; " << describe(r);
-    if (r.stats.rays == 0) GTEST_SKIP() << kNoShadowRays << "; " << measured.str();
     EXPECT_EQ(r.status, SolveStatus::converged) << measured.str();
     EXPECT_LE(b->max, 1e-6 * a->average) << measured.str();
     EXPECT_LE(edge->max, 1e-6 * a->average) << measured.str();
