@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -136,6 +137,42 @@ TEST_F(DaemonTest, SigtermStopsCleanly) {
     const std::string slow = post(d, radiant::test::slow_room());
     ASSERT_EQ(wait_for(d, slow, "running")["status"], "running");
     EXPECT_EQ(d.stop(SIGTERM), 0);
+}
+
+}  // namespace
+
+namespace {
+
+/// Runs the built `radiant` CLI with RADIANT_SERVER pointing at `port`; returns exit code and
+/// stdout.
+std::pair<int, std::string> cli(unsigned short port, const std::string& args, const fs::path& dir) {
+    std::string command = "RADIANT_SERVER=http://127.0.0.1:" + std::to_string(port) + " ";
+    command.append(RADIANT_BIN_DIR).append("/radiant ").append(args);
+    command.append(" > '").append((dir / "cli.out").string()).append("' 2>/dev/null");
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+            radiant::test::read_text(dir / "cli.out")};
+}
+
+TEST_F(DaemonTest, CliSubmitWaitStatusWatchResult) {
+    Daemon d(data(), {}, log());
+    const fs::path scene = dir_ / "room.json";
+    { std::ofstream(scene) << radiant::test::tiny_room(); }
+    const auto [wait_code, result] = cli(d.port(), "submit --wait '" + scene.string() + "'", dir_);
+    ASSERT_EQ(wait_code, 0);
+    EXPECT_EQ(json::parse(result)["status"], "converged");
+
+    const auto [submit_code, id_line] = cli(d.port(), "submit '" + scene.string() + "'", dir_);
+    ASSERT_EQ(submit_code, 0);
+    const std::string id = id_line.substr(0, id_line.find('\n'));
+    EXPECT_EQ(id.size(), 32u);
+    const auto [watch_code, watched] = cli(d.port(), "watch " + id, dir_);
+    EXPECT_EQ(watch_code, 0);
+    EXPECT_EQ(watched, id + ": done\n");
+    EXPECT_EQ(json::parse(cli(d.port(), "status " + id, dir_).second)["status"], "done");
+    EXPECT_EQ(json::parse(cli(d.port(), "result " + id, dir_).second)["format"],
+              "radiant-result/1");
+    EXPECT_EQ(cli(d.port(), "status 0000", dir_).first, 2);
 }
 
 }  // namespace
