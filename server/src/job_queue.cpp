@@ -229,7 +229,8 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
             result.error = std::string("internal error: ") + e.what();
         }
     }
-    if (job->token.cancelled() && !job->user_cancelled) {
+    // A solve that converged just as shutdown began is kept; anything cut short runs again.
+    if (job->token.cancelled() && !job->user_cancelled && result.status != SolveStatus::converged) {
         spdlog::info("job {} interrupted by shutdown; it runs again after restart", id);
         return;
     }

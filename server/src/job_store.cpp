@@ -74,8 +74,11 @@ JobRecord read_job(const Statement& s) {
     return job;
 }
 
-std::string select_jobs(const char* where) {
-    return std::string("SELECT ") + kJobColumns + " FROM jobs " + where;
+std::string select_jobs(const char* where, bool with_scene = true) {
+    std::string columns = kJobColumns;
+    // Listing never needs scenes, which may be megabytes each.
+    if (!with_scene) columns.replace(columns.find("scene,"), 6, "'' AS scene,");
+    return "SELECT " + columns + " FROM jobs " + where;
 }
 
 }  // namespace
@@ -160,10 +163,11 @@ std::optional<JobRecord> JobStore::find_by_idempotency_key(const std::string& ke
 
 std::vector<JobRecord> JobStore::list(std::size_t limit, const std::string& after) const {
     const std::lock_guard lock(mutex_);
-    const std::string sql = after.empty() ? select_jobs("ORDER BY seq DESC LIMIT ?")
+    const std::string sql = after.empty() ? select_jobs("ORDER BY seq DESC LIMIT ?", false)
                                           : select_jobs(
                                                 "WHERE seq < (SELECT seq FROM jobs WHERE id = ?)"
-                                                " ORDER BY seq DESC LIMIT ?");
+                                                " ORDER BY seq DESC LIMIT ?",
+                                                false);
     Statement s(db_, sql.c_str());
     int i = 1;
     if (!after.empty()) s.bind(i++, after);

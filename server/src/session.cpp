@@ -46,10 +46,12 @@ void Session::do_read() {
 
 void Session::on_header(beast::error_code ec) {
     started_ = std::chrono::steady_clock::now();
+    if (parser_->is_header_done()) {  // also for a refused body, so the log names the request
+        method_ = std::string(parser_->get().method_string());
+        target_ = std::string(parser_->get().target());
+    }
     if (!ec) {
         const auto& header = parser_->get();
-        method_ = std::string(header.method_string());
-        target_ = std::string(header.target());
         if (beast::iequals(header[http::field::expect], "100-continue")) {
             // curl asks before sending large bodies; answering saves it a one-second wait.
             auto cont = std::make_shared<http::response<http::empty_body>>(http::status::continue_,

@@ -91,6 +91,9 @@ TEST_F(DaemonTest, SolvesRefusesAndStreams) {
 
     EXPECT_EQ(http_call(d.port(), verb::get, "/v1/jobs/0123").status, 404u);
     EXPECT_EQ(http_call(d.port(), verb::get, "/healthz").status, 200u);
+    const auto big_header = http_call(d.port(), verb::get, "/healthz", "",
+                                      {{"X-Padding", std::string(17 * 1024, 'x')}});
+    EXPECT_EQ(big_header.status, 431u);
     const auto metrics = http_call(d.port(), verb::get, "/metrics");
     EXPECT_NE(metrics.body.find("radiant_jobs{state=\"done\"} 1"), std::string::npos);
 }
