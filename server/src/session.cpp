@@ -46,7 +46,7 @@ void Session::do_read() {
 
 void Session::on_header(beast::error_code ec) {
     started_ = std::chrono::steady_clock::now();
-    if (parser_->is_header_done()) {  // also for a refused body, so the log names the request
+    if (!parser_->get().target().empty()) {  // also for a refused body, so the log names it
         method_ = std::string(parser_->get().method_string());
         target_ = std::string(parser_->get().target());
     }

@@ -75,6 +75,11 @@ TEST_F(DaemonTest, SolvesRefusesAndStreams) {
               std::string::npos)
         << events.body;
 
+    // Resuming past the last progress event gives only the end.
+    const auto resumed = http_call(d.port(), verb::get, "/v1/jobs/" + id + "/events", "",
+                                   {{"Last-Event-ID", "1000000"}});
+    EXPECT_TRUE(resumed.body.starts_with("event: done\n")) << resumed.body;
+
     const auto bad_json = http_call(d.port(), verb::post, "/v1/jobs", "{");
     EXPECT_EQ(bad_json.status, 400u);
     EXPECT_EQ(json::parse(bad_json.body)["error"]["code"], "invalid_json");

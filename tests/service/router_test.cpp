@@ -70,6 +70,7 @@ public:
         return job;
     }
 
+    JobQueue& jobs() { return *jobs_; }
     JobStore& store() { return *store_; }
     Metrics& metrics() { return metrics_; }
     const fs::path& dir() const { return dir_; }
@@ -210,6 +211,15 @@ TEST(Router, ListIsNewestFirstAndPaged) {
     EXPECT_TRUE(second["next"].is_null());
     EXPECT_EQ(s.get("/v1/jobs?limit=0").result(), http::status::bad_request);
     for (const std::string& id : ids) s.wait_for(id, "done");
+}
+
+TEST(Router, ShuttingDownIs503) {
+    Service s;
+    s.jobs().shutdown();
+    const Response r = s.post(radiant::test::tiny_room());
+    EXPECT_EQ(r.result(), http::status::service_unavailable);
+    EXPECT_EQ(json::parse(r.body())["error"]["code"], "shutting_down");
+    EXPECT_EQ(s.get("/healthz").result(), http::status::service_unavailable);
 }
 
 TEST(Router, HealthAndMetrics) {
