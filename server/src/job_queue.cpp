@@ -48,9 +48,8 @@ struct JobQueue::LiveJob final : SolveObserver {
 JobQueue::JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options)
     : store_(store), metrics_(metrics), options_(options) {
     for (const std::string& id : store_.requeue_unfinished()) {
-        std::optional<JobRecord> record = store_.find(id);
+        std::optional<JobRecord> record = store_.find(id, false);
         if (!record) continue;
-        record->scene_json.clear();
         auto job = std::make_shared<LiveJob>(std::move(*record));
         queue_.push_back(job);
         live_.emplace(id, job);
@@ -106,9 +105,7 @@ std::optional<JobRecord> JobQueue::find(const std::string& id) const {
         }
         if (job) return job->snapshot();
     }
-    std::optional<JobRecord> record = store_.find(id);
-    if (record) record->scene_json.clear();
-    return record;
+    return store_.find(id, false);
 }
 
 std::string JobQueue::scene_name(const std::string& id) const {

@@ -145,9 +145,9 @@ void JobStore::insert(const JobRecord& job) {
     s.step();
 }
 
-std::optional<JobRecord> JobStore::find(const std::string& id) const {
+std::optional<JobRecord> JobStore::find(const std::string& id, bool with_scene) const {
     const std::lock_guard lock(mutex_);
-    Statement s(db_, select_jobs("WHERE id = ?").c_str());
+    Statement s(db_, select_jobs("WHERE id = ?", with_scene).c_str());
     s.bind(1, id);
     if (!s.step()) return std::nullopt;
     return read_job(s);

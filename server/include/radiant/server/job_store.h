@@ -28,7 +28,8 @@ public:
     JobStore& operator=(const JobStore&) = delete;
 
     void insert(const JobRecord& job);
-    std::optional<JobRecord> find(const std::string& id) const;
+    /// `with_scene` false leaves scene_json empty: status reads never need megabytes of scene.
+    std::optional<JobRecord> find(const std::string& id, bool with_scene = true) const;
     std::optional<JobRecord> find_by_idempotency_key(const std::string& key) const;
     /// Newest first; `after` is the id of the last job of the previous page (empty: from the top).
     std::vector<JobRecord> list(std::size_t limit, const std::string& after) const;
