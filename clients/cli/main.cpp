@@ -1,12 +1,18 @@
-// radiant: solve or validate radiant-scene/1 files from the command line (contract §1).
+// radiant: solve or validate radiant-scene/1 files locally, or submit them to radiantd and follow
+// the jobs (contract §1, §4).
 #include <exception>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 
 #include "exit_codes.h"
+#include "http_client.h"
+#include "result_command.h"
 #include "solve_command.h"
+#include "status_command.h"
+#include "submit_command.h"
 #include "validate_command.h"
+#include "watch_command.h"
 
 int main(int argc, char** argv) {
     int exit_code = radiant::cli::kExitOk;
@@ -15,12 +21,19 @@ int main(int argc, char** argv) {
         app.require_subcommand(1);
         radiant::cli::add_solve_command(app, exit_code);
         radiant::cli::add_validate_command(app, exit_code);
+        radiant::cli::add_submit_command(app, exit_code);
+        radiant::cli::add_status_command(app, exit_code);
+        radiant::cli::add_watch_command(app, exit_code);
+        radiant::cli::add_result_command(app, exit_code);
         try {
             app.parse(argc, argv);
         } catch (const CLI::ParseError& e) {
             // Usage errors are bad input (2); --help is a success.
             return app.exit(e) == 0 ? radiant::cli::kExitOk : radiant::cli::kExitBadInput;
         }
+    } catch (const radiant::cli::ConnectionError& e) {
+        std::cerr << "radiant: " << e.what() << '\n';
+        return radiant::cli::kExitFailure;
     } catch (const std::exception& e) {
         std::cerr << "radiant: " << e.what() << '\n';
         return radiant::cli::kExitFailure;

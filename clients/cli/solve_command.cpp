@@ -32,7 +32,7 @@ struct SolveArgs {
 /// One progress line on stderr, rewritten in place with \r. Only used when stderr is a terminal,
 /// so logs and pipes never see control characters.
 class ProgressLine : public SolveObserver {
-  public:
+public:
     ~ProgressLine() override {
         if (printed_) std::fputc('\n', stderr);
     }
@@ -49,7 +49,7 @@ class ProgressLine : public SolveObserver {
         std::fflush(stderr);
     }
 
-  private:
+private:
     std::mutex mutex_;
     bool printed_ = false;
     std::chrono::steady_clock::time_point last_;

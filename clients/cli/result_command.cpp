@@ -1,0 +1,32 @@
+#include "result_command.h"
+
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "exit_codes.h"
+#include "service_client.h"
+
+namespace radiant::cli {
+
+void add_result_command(CLI::App& app, int& exit_code) {
+    auto* cmd = app.add_subcommand("result", "Print a radiantd job's radiant-result/1 document");
+    auto id = std::make_shared<std::string>();
+    auto url = std::make_shared<std::string>();
+    cmd->add_option("id", *id, "job id")->required();
+    add_server_option(cmd, url);
+    cmd->callback([id, url, &exit_code] {
+        const HttpReply reply = http_request(server_of(*url), "GET", "/v1/jobs/" + *id + "/result");
+        if (reply.status != 200) {
+            exit_code = report_error(*id, reply);
+            return;
+        }
+        // Pretty, like `radiant solve`: the store keeps results compact.
+        std::cout << nlohmann::json::parse(reply.body).dump(2) << '\n';
+        exit_code = kExitOk;
+    });
+}
+
+}  // namespace radiant::cli

@@ -1,0 +1,30 @@
+// radiantd's settings (flags, with RADIANT_* environment variables as fallbacks).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace radiant::server {
+
+struct ServerConfig {
+    std::string listen = "127.0.0.1:8080";  ///< ADDR:PORT; port 0 picks a free one
+    std::string data_dir = "./data";
+    std::size_t workers = 1;       ///< concurrent solves; each one uses every core
+    std::size_t queue_limit = 64;  ///< waiting jobs; bounded so memory and latency stay bounded
+    /// Largest request body; the scene parser's own limit, so nothing bigger is ever buffered.
+    std::size_t max_body_bytes = 64u << 20;
+    std::optional<double> job_seconds;  ///< per-job solve time cap (none: the scene's own)
+    std::size_t io_threads = 2;         ///< handlers are short; solves run on the workers
+};
+
+struct ListenAddress {
+    std::string host;
+    std::uint16_t port = 0;
+};
+
+/// "127.0.0.1:8080" or "[::1]:8080"; nothing for anything else.
+std::optional<ListenAddress> parse_listen(const std::string& text);
+
+}  // namespace radiant::server

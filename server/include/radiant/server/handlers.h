@@ -1,0 +1,40 @@
+// The endpoint handlers of contract §4: plain functions from a request to a response, so tests
+// call them without sockets. They run on I/O threads and therefore never solve: they parse,
+// read or write the store and the queue, and return.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "radiant/server/http.h"
+#include "radiant/server/job_queue.h"
+#include "radiant/server/job_store.h"
+#include "radiant/server/metrics.h"
+
+namespace radiant::server {
+
+/// What the handlers share; owned by main (or a test).
+struct ServiceContext {
+    JobQueue& jobs;
+    JobStore& store;
+    Metrics& metrics;
+    std::size_t max_body_bytes;
+};
+
+using Query = std::map<std::string, std::string>;
+
+namespace handlers {
+
+Response submit_job(ServiceContext& ctx, const Request& request);
+Response get_job(ServiceContext& ctx, const Request& request, const std::string& id);
+Response get_result(ServiceContext& ctx, const Request& request, const std::string& id);
+Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id);
+Response list_jobs(ServiceContext& ctx, const Request& request, const Query& query);
+Response healthz(ServiceContext& ctx, const Request& request);
+Response metrics(ServiceContext& ctx, const Request& request);
+Response not_found(const Request& request);
+
+}  // namespace handlers
+}  // namespace radiant::server

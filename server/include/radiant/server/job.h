@@ -1,0 +1,58 @@
+// A job as the service stores and reports it: one submitted scene and what became of it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+namespace radiant::server {
+
+enum class JobStatus { queued, running, done, failed, cancelled };
+
+const char* to_string(JobStatus status);
+std::optional<JobStatus> parse_job_status(std::string_view text);
+/// done, failed and cancelled never change again.
+bool is_terminal(JobStatus status);
+
+/// The progress fields of contract §4, plus the sequence number that SSE event ids use.
+struct JobProgress {
+    std::uint64_t sequence = 0;  ///< increases with every engine progress report
+    std::string stage;
+    double fraction = 0;
+    std::size_t iterations = 0;
+    double unshot_fraction = 0;
+    double error_estimate = 0;
+    double elapsed_seconds = 0;
+    std::uint64_t rays = 0;
+};
+
+nlohmann::json progress_to_json(const JobProgress& progress);
+/// Lenient: missing or mistyped fields keep their defaults (the store wrote them).
+JobProgress progress_from_json(const nlohmann::json& json);
+
+/// Milliseconds since the Unix epoch; 0 means "not yet".
+using UnixMillis = std::int64_t;
+UnixMillis now_millis();
+/// ISO 8601 UTC with milliseconds, e.g. 2026-11-23T08:44:39.123Z.
+std::string iso8601(UnixMillis millis);
+
+struct JobRecord {
+    std::string id;  ///< 32 lowercase hex digits (128 random bits)
+    JobStatus status = JobStatus::queued;
+    std::string scene_json;
+    std::string idempotency_key;  ///< empty when the client sent none
+    UnixMillis created = 0, started = 0, finished = 0;
+    JobProgress progress;
+    std::string error;
+};
+
+/// {id, status, progress, created, started, finished[, error]}: GET /v1/jobs/{id}.
+nlohmann::json job_to_json(const JobRecord& job);
+
+/// A fresh random 128-bit id in hex. Thread-safe.
+std::string new_job_id();
+
+}  // namespace radiant::server

@@ -1,0 +1,84 @@
+// The job queue: a bounded FIFO of accepted jobs and N worker threads that run radiant::solve.
+// Solves never run on I/O threads; the workers only publish progress into shared state, which
+// HTTP sessions read when they choose to (slow clients never block a solve).
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <unordered_map>
+#include <vector>
+
+#include "radiant/server/job.h"
+#include "radiant/server/job_store.h"
+#include "radiant/server/metrics.h"
+
+namespace radiant::server {
+
+struct JobQueueOptions {
+    std::size_t workers = 1;            ///< concurrent solves; each solve uses `solve_threads`
+    std::size_t queue_limit = 64;       ///< queued (not running) jobs before POST answers 429
+    std::optional<double> job_seconds;  ///< per-job wall-clock cap on top of the scene's own
+    int solve_threads = 0;              ///< 0: all cores
+};
+
+struct SubmitOutcome {
+    enum class Kind { accepted, replayed, queue_full, shutting_down };
+    Kind kind = Kind::accepted;
+    JobRecord job;  ///< without scene_json; empty unless accepted or replayed
+};
+
+class JobQueue {
+public:
+    /// Re-queues what the store holds as queued or running (an earlier process stopped before
+    /// finishing them), then starts the workers.
+    JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options);
+    /// Calls shutdown().
+    ~JobQueue();
+    JobQueue(const JobQueue&) = delete;
+    JobQueue& operator=(const JobQueue&) = delete;
+
+    /// Stores and queues a scene that already passed proto::parse_scene. With a non-empty
+    /// `idempotency_key` that an earlier job used, returns that job instead. Thread-safe.
+    SubmitOutcome submit(const std::string& scene_json, const std::string& idempotency_key);
+
+    /// The job without its scene text; live progress for queued and running jobs. Thread-safe.
+    std::optional<JobRecord> find(const std::string& id) const;
+    /// Scene name of a running job (the name of a finished one is in its result).
+    std::string scene_name(const std::string& id) const;
+
+    /// Cancels: a queued job becomes cancelled at once; a running solve is asked to stop and
+    /// becomes cancelled within about a second, its best result kept. Finished jobs are left as
+    /// they are. Returns the job as it is now, or nothing for an unknown id. Thread-safe.
+    std::optional<JobRecord> cancel(const std::string& id);
+
+    std::size_t queue_length() const;
+    bool shutting_down() const;
+
+    /// Refuses new jobs, stops running solves without recording them as finished (so the next
+    /// process runs them again) and joins the workers. Idempotent.
+    void shutdown();
+
+private:
+    struct LiveJob;
+    void work();
+    void run(const std::shared_ptr<LiveJob>& job);
+
+    JobStore& store_;
+    Metrics& metrics_;
+    const JobQueueOptions options_;
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    bool stopping_ = false;
+    std::deque<std::shared_ptr<LiveJob>> queue_;
+    std::unordered_map<std::string, std::shared_ptr<LiveJob>> live_;  ///< queued or running
+    std::vector<std::thread> workers_;
+};
+
+}  // namespace radiant::server

@@ -1,0 +1,56 @@
+// The durable job store: one SQLite database under --data, so an accepted job survives a restart
+// or a crash (contract §4).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "radiant/server/job.h"
+
+struct sqlite3;
+
+namespace radiant::server {
+
+/// Thread-safe: one connection guarded by a mutex. Every statement is short (a row or a page), so
+/// contention is not worth a connection pool at this scale. Throws std::runtime_error on SQLite
+/// failures (disk full, corruption): those are broken invariants, not bad input.
+class JobStore {
+public:
+    /// Opens (creating when missing) `data_dir`/radiant.db in WAL mode.
+    explicit JobStore(const std::filesystem::path& data_dir);
+    ~JobStore();
+    JobStore(const JobStore&) = delete;
+    JobStore& operator=(const JobStore&) = delete;
+
+    void insert(const JobRecord& job);
+    /// `with_scene` false leaves scene_json empty: status reads never need megabytes of scene.
+    std::optional<JobRecord> find(const std::string& id, bool with_scene = true) const;
+    std::optional<JobRecord> find_by_idempotency_key(const std::string& key) const;
+    /// Newest first; `after` is the id of the last job of the previous page (empty: from the top).
+    std::vector<JobRecord> list(std::size_t limit, const std::string& after) const;
+
+    void mark_running(const std::string& id, UnixMillis started);
+    void save_progress(const std::string& id, const JobProgress& progress);
+    /// Final state, progress and (optionally) the result document, in one transaction.
+    void finish(const std::string& id, JobStatus status, UnixMillis finished,
+                const JobProgress& progress, const std::string& error,
+                const std::optional<std::string>& result_json);
+    std::optional<std::string> result(const std::string& id) const;
+
+    /// Jobs that were queued or running when the last process stopped, oldest first; their state
+    /// goes back to queued (a solve that did not finish starts over).
+    std::vector<std::string> requeue_unfinished();
+    std::map<JobStatus, std::size_t> count_by_status() const;
+
+private:
+    void exec(const char* sql) const;
+    sqlite3* db_ = nullptr;
+    mutable std::mutex mutex_;
+};
+
+}  // namespace radiant::server

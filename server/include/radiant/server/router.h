@@ -1,0 +1,42 @@
+// Maps method + path to a handler. route() is a plain function of the request, so tests drive the
+// whole API without sockets; only the event stream needs the session to keep writing.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "radiant/server/handlers.h"
+#include "radiant/server/http.h"
+
+namespace radiant::server {
+
+/// The session should answer with text/event-stream for this job instead of `response`.
+struct EventStreamStart {
+    std::string job_id;
+    std::uint64_t last_event_id = 0;
+};
+
+struct RouteResult {
+    Response response;
+    std::optional<EventStreamStart> events;
+};
+
+/// "a=1&b=x%20y" → {a: 1, b: "x y"}; later duplicates win.
+Query parse_query(std::string_view query);
+
+class Router {
+public:
+    explicit Router(ServiceContext& ctx) : ctx_(ctx) {}
+
+    /// Never throws: an exception from a handler becomes a 500 with a JSON error body.
+    RouteResult route(const Request& request);
+
+    ServiceContext& context() { return ctx_; }
+
+private:
+    RouteResult dispatch(const Request& request);
+    ServiceContext& ctx_;
+};
+
+}  // namespace radiant::server

@@ -1,0 +1,24 @@
+#include "radiant/server/config.h"
+
+#include <charconv>
+
+namespace radiant::server {
+
+std::optional<ListenAddress> parse_listen(const std::string& text) {
+    const std::size_t colon = text.rfind(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == text.size()) return std::nullopt;
+    ListenAddress out;
+    out.host = text.substr(0, colon);
+    if (out.host.size() >= 2 && out.host.front() == '[' && out.host.back() == ']') {
+        out.host = out.host.substr(1, out.host.size() - 2);
+    }
+    const char* first = text.data() + colon + 1;
+    const char* last = text.data() + text.size();
+    unsigned port = 0;
+    const auto [end, ec] = std::from_chars(first, last, port);
+    if (ec != std::errc{} || end != last || port > 65535) return std::nullopt;
+    out.port = static_cast<std::uint16_t>(port);
+    return out;
+}
+
+}  // namespace radiant::server

@@ -1,0 +1,169 @@
+#include "radiant/server/handlers.h"
+
+#include <charconv>
+#include <string_view>
+
+#include "radiant/proto/scene_json.h"
+
+namespace radiant::server::handlers {
+namespace {
+
+/// A page bigger than this is refused: one request must stay cheap for the store and the client.
+constexpr std::size_t kMaxPageSize = 1000;
+constexpr std::size_t kDefaultPageSize = 50;
+/// How long a client should wait before retrying a full queue; solves take seconds to minutes.
+constexpr const char* kRetryAfterSeconds = "5";
+
+Response unknown_job(const Request& request, const std::string& id) {
+    return error_response(request, http::status::not_found, "not_found",
+                          "no job with id \"" + id + "\"");
+}
+
+Response job_response(const Request& request, http::status status, const JobRecord& job) {
+    Response response = json_response(request, status, job_to_json(job));
+    response.set(http::field::location, "/v1/jobs/" + job.id);
+    return response;
+}
+
+}  // namespace
+
+Response submit_job(ServiceContext& ctx, const Request& request) {
+    const std::string& body = request.body();
+    // Sessions refuse larger bodies before reading them; this keeps the handler honest alone.
+    if (body.size() > ctx.max_body_bytes) {
+        return error_response(
+            request, http::status::payload_too_large, "too_large",
+            "the request body is larger than " + std::to_string(ctx.max_body_bytes) + " bytes");
+    }
+    if (!nlohmann::json::accept(body)) {
+        // parse_scene gives the line and column of the syntax error.
+        const proto::ParseOutcome outcome = proto::parse_scene(body);
+        return error_response(request, http::status::bad_request, "invalid_json",
+                              "the body is not JSON", "", outcome.problems);
+    }
+    proto::ParseLimits limits;
+    limits.max_bytes = ctx.max_body_bytes;
+    const proto::ParseOutcome outcome = proto::parse_scene(body, limits);
+    if (!outcome.ok()) {
+        return error_response(request, http::status::bad_request, "invalid_scene", "", "",
+                              outcome.problems);
+    }
+    const std::string key(request["Idempotency-Key"]);
+    const SubmitOutcome submitted = ctx.jobs.submit(body, key);
+    switch (submitted.kind) {
+        case SubmitOutcome::Kind::accepted:
+        case SubmitOutcome::Kind::replayed: {
+            Response response = json_response(
+                request, http::status::accepted,
+                {{"id", submitted.job.id}, {"status", to_string(submitted.job.status)}});
+            response.set(http::field::location, "/v1/jobs/" + submitted.job.id);
+            return response;
+        }
+        case SubmitOutcome::Kind::queue_full: {
+            Response response = error_response(request, http::status::too_many_requests,
+                                               "queue_full", "the job queue is full; retry later");
+            response.set(http::field::retry_after, kRetryAfterSeconds);
+            return response;
+        }
+        case SubmitOutcome::Kind::shutting_down:
+            break;
+    }
+    return error_response(request, http::status::service_unavailable, "shutting_down",
+                          "the service is shutting down");
+}
+
+Response get_job(ServiceContext& ctx, const Request& request, const std::string& id) {
+    const auto job = ctx.jobs.find(id);
+    if (!job) return unknown_job(request, id);
+    return job_response(request, http::status::ok, *job);
+}
+
+Response get_result(ServiceContext& ctx, const Request& request, const std::string& id) {
+    const auto job = ctx.jobs.find(id);
+    if (!job) return unknown_job(request, id);
+    if (job->status == JobStatus::queued) {
+        return error_response(request, http::status::not_found, "not_ready",
+                              "job " + id + " is queued; it has no result yet");
+    }
+    if (job->status == JobStatus::running) {
+        // The engine publishes progress but not yet intermediate radiosity, so a running
+        // snapshot carries statistics only.
+        const JobProgress& p = job->progress;
+        return json_response(request, http::status::ok,
+                             {{"format", "radiant-result/1"},
+                              {"scene", ctx.jobs.scene_name(id)},
+                              {"status", "running"},
+                              {"stats",
+                               {{"iterations", p.iterations},
+                                {"rays", p.rays},
+                                {"seconds", p.elapsed_seconds},
+                                {"unshot_fraction", p.unshot_fraction},
+                                {"error_estimate", p.error_estimate}}},
+                              {"progress", {{"stage", p.stage}, {"fraction", p.fraction}}},
+                              {"sensors", nlohmann::json::array()},
+                              {"surfaces", nlohmann::json::array()}});
+    }
+    const auto result = ctx.store.result(id);
+    if (!result) {
+        return error_response(
+            request, http::status::not_found, "no_result",
+            "job " + id + " was " + to_string(job->status) + " before it produced a result");
+    }
+    return text_response(request, http::status::ok, *result + "\n", "application/json");
+}
+
+Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id) {
+    const auto job = ctx.jobs.cancel(id);
+    if (!job) return unknown_job(request, id);
+    // 202 while a running solve is still stopping; 200 once the state is final.
+    return job_response(
+        request, job->status == JobStatus::running ? http::status::accepted : http::status::ok,
+        *job);
+}
+
+Response list_jobs(ServiceContext& ctx, const Request& request, const Query& query) {
+    std::size_t limit = kDefaultPageSize;
+    if (const auto it = query.find("limit"); it != query.end()) {
+        const std::string& text = it->second;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), limit);
+        if (ec != std::errc{} || end != text.data() + text.size() || limit < 1 ||
+            limit > kMaxPageSize) {
+            return error_response(
+                request, http::status::bad_request, "invalid_query",
+                "limit must be an integer from 1 to " + std::to_string(kMaxPageSize));
+        }
+    }
+    std::string after;
+    if (const auto it = query.find("after"); it != query.end()) after = it->second;
+    // One extra row tells whether there is a next page.
+    std::vector<JobRecord> jobs = ctx.store.list(limit + 1, after);
+    const bool more = jobs.size() > limit;
+    if (more) jobs.resize(limit);
+    nlohmann::json list = nlohmann::json::array();
+    for (JobRecord& job : jobs) {
+        if (const auto live = ctx.jobs.find(job.id)) job = *live;
+        list.push_back(job_to_json(job));
+    }
+    nlohmann::json body = {{"jobs", std::move(list)}, {"next", nullptr}};
+    if (more) body["next"] = jobs.back().id;
+    return json_response(request, http::status::ok, body);
+}
+
+Response healthz(ServiceContext& ctx, const Request& request) {
+    const bool stopping = ctx.jobs.shutting_down();
+    return json_response(request, stopping ? http::status::service_unavailable : http::status::ok,
+                         {{"status", stopping ? "shutting_down" : "ok"}});
+}
+
+Response metrics(ServiceContext& ctx, const Request& request) {
+    return text_response(request, http::status::ok,
+                         ctx.metrics.render(ctx.store.count_by_status(), ctx.jobs.queue_length()),
+                         "text/plain; version=0.0.4");
+}
+
+Response not_found(const Request& request) {
+    return error_response(request, http::status::not_found, "not_found",
+                          "no such resource: " + std::string(request.target()));
+}
+
+}  // namespace radiant::server::handlers

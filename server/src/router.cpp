@@ -1,0 +1,143 @@
+#include "radiant/server/router.h"
+
+#include <spdlog/spdlog.h>
+
+#include <charconv>
+#include <exception>
+#include <string_view>
+#include <vector>
+
+namespace radiant::server {
+namespace {
+
+std::vector<std::string_view> split_path(std::string_view path) {
+    std::vector<std::string_view> parts;
+    while (!path.empty()) {
+        if (path.front() == '/') {
+            path.remove_prefix(1);
+            continue;
+        }
+        const std::size_t slash = path.find('/');
+        parts.push_back(path.substr(0, slash));
+        if (slash == std::string_view::npos) break;
+        path.remove_prefix(slash);
+    }
+    return parts;
+}
+
+int hex_value(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+std::string percent_decode(std::string_view text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '+') {
+            out += ' ';
+        } else if (text[i] == '%' && i + 2 < text.size() && hex_value(text[i + 1]) >= 0 &&
+                   hex_value(text[i + 2]) >= 0) {
+            out += static_cast<char>(hex_value(text[i + 1]) * 16 + hex_value(text[i + 2]));
+            i += 2;
+        } else {
+            out += text[i];
+        }
+    }
+    return out;
+}
+
+Response method_not_allowed(const Request& request, const char* allow) {
+    Response response =
+        error_response(request, http::status::method_not_allowed, "method_not_allowed",
+                       std::string(request.method_string()) + " is not allowed");
+    response.set(http::field::allow, allow);
+    return response;
+}
+
+}  // namespace
+
+Query parse_query(std::string_view query) {
+    Query out;
+    while (!query.empty()) {
+        const std::size_t amp = query.find('&');
+        const std::string_view pair = query.substr(0, amp);
+        const std::size_t eq = pair.find('=');
+        if (!pair.empty()) {
+            out[percent_decode(pair.substr(0, eq))] =
+                eq == std::string_view::npos ? std::string() : percent_decode(pair.substr(eq + 1));
+        }
+        if (amp == std::string_view::npos) break;
+        query.remove_prefix(amp + 1);
+    }
+    return out;
+}
+
+RouteResult Router::route(const Request& request) {
+    try {
+        return dispatch(request);
+    } catch (const std::exception& e) {
+        // Catch at the boundary: a broken request or store is one 500, not a dead daemon.
+        spdlog::error("{} {}: {}", std::string(request.method_string()),
+                      std::string(request.target()), e.what());
+        return {error_response(request, http::status::internal_server_error, "internal",
+                               "internal error; see the server log"),
+                std::nullopt};
+    }
+}
+
+RouteResult Router::dispatch(const Request& request) {
+    const std::string_view target = to_std(request.target());
+    const std::size_t question = target.find('?');
+    const std::string_view path = target.substr(0, question);
+    const Query query =
+        question == std::string_view::npos ? Query{} : parse_query(target.substr(question + 1));
+    const std::vector<std::string_view> parts = split_path(path);
+    const http::verb method = request.method();
+    const bool get = method == http::verb::get;
+
+    if (parts.size() == 1 && parts[0] == "healthz") {
+        if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
+        return {handlers::healthz(ctx_, request), std::nullopt};
+    }
+    if (parts.size() == 1 && parts[0] == "metrics") {
+        if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
+        return {handlers::metrics(ctx_, request), std::nullopt};
+    }
+    if (parts.size() < 2 || parts[0] != "v1" || parts[1] != "jobs") {
+        return {handlers::not_found(request), std::nullopt};
+    }
+    if (parts.size() == 2) {
+        if (method == http::verb::post) return {handlers::submit_job(ctx_, request), std::nullopt};
+        if (get) return {handlers::list_jobs(ctx_, request, query), std::nullopt};
+        return {method_not_allowed(request, "GET, POST"), std::nullopt};
+    }
+    const std::string id(parts[2]);
+    if (parts.size() == 3) {
+        if (get) return {handlers::get_job(ctx_, request, id), std::nullopt};
+        if (method == http::verb::delete_) {
+            return {handlers::cancel_job(ctx_, request, id), std::nullopt};
+        }
+        return {method_not_allowed(request, "GET, DELETE"), std::nullopt};
+    }
+    if (parts.size() == 4 && parts[3] == "result") {
+        if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
+        return {handlers::get_result(ctx_, request, id), std::nullopt};
+    }
+    if (parts.size() == 4 && parts[3] == "events") {
+        if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
+        if (!ctx_.jobs.find(id)) return {handlers::get_job(ctx_, request, id), std::nullopt};
+        std::uint64_t last = 0;
+        const std::string_view header = to_std(request["Last-Event-ID"]);
+        std::from_chars(header.data(), header.data() + header.size(), last);
+        Response response{http::status::ok, request.version()};
+        response.set(http::field::server, "radiantd");
+        response.set(http::field::content_type, "text/event-stream");
+        response.set(http::field::cache_control, "no-cache");
+        return {std::move(response), EventStreamStart{id, last}};
+    }
+    return {handlers::not_found(request), std::nullopt};
+}
+
+}  // namespace radiant::server

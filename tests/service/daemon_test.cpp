@@ -1,0 +1,186 @@
+// End to end: the radiantd binary on an ephemeral loopback port, over real sockets.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "daemon.h"
+#include "service_scenes.h"
+#include "test_files.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using boost::beast::http::verb;
+using nlohmann::json;
+using radiant::test::Daemon;
+using radiant::test::http_call;
+
+class DaemonTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("radiantd_test_" + std::to_string(getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override {
+        if (HasFailure()) std::cerr << radiant::test::read_text(log()) << '\n';
+        fs::remove_all(dir_);
+    }
+    fs::path data() const { return dir_ / "data"; }
+    fs::path log() const { return dir_ / "radiantd.log"; }
+
+    static std::string post(const Daemon& d, const std::string& scene) {
+        const auto r = http_call(d.port(), verb::post, "/v1/jobs", scene);
+        EXPECT_EQ(r.status, 202u) << r.body;
+        return json::parse(r.body)["id"];
+    }
+    static json wait_for(const Daemon& d, const std::string& id, const std::string& want,
+                         double seconds = 20) {
+        const auto deadline =
+            std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        json job;
+        do {
+            job = json::parse(http_call(d.port(), verb::get, "/v1/jobs/" + id).body);
+            if (job["status"] == want) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        } while (std::chrono::steady_clock::now() < deadline);
+        return job;
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(DaemonTest, SolvesRefusesAndStreams) {
+    Daemon d(data(), {"--max-body-bytes", "100000", "--queue-limit", "1"}, log());
+
+    const std::string id = post(d, radiant::test::tiny_room());
+    ASSERT_EQ(wait_for(d, id, "done")["status"], "done");
+    const auto result = http_call(d.port(), verb::get, "/v1/jobs/" + id + "/result");
+    ASSERT_EQ(result.status, 200u);
+    EXPECT_GT(json::parse(result.body)["sensors"][0]["average"].get<double>(), 0);
+
+    // A finished job's stream is its last progress, then done.
+    const auto events = http_call(d.port(), verb::get, "/v1/jobs/" + id + "/events");
+    EXPECT_EQ(events.status, 200u);
+    EXPECT_EQ(events.headers.at("Content-Type"), "text/event-stream");
+    EXPECT_NE(events.body.find("event: progress\nid: "), std::string::npos) << events.body;
+    EXPECT_NE(events.body.find("event: done\ndata: {\"id\":\"" + id + "\",\"status\":\"done\"}"),
+              std::string::npos)
+        << events.body;
+
+    // Resuming past the last progress event gives only the end.
+    const auto resumed = http_call(d.port(), verb::get, "/v1/jobs/" + id + "/events", "",
+                                   {{"Last-Event-ID", "1000000"}});
+    EXPECT_TRUE(resumed.body.starts_with("event: done\n")) << resumed.body;
+
+    const auto bad_json = http_call(d.port(), verb::post, "/v1/jobs", "{");
+    EXPECT_EQ(bad_json.status, 400u);
+    EXPECT_EQ(json::parse(bad_json.body)["error"]["code"], "invalid_json");
+
+    const auto bad_scene = http_call(
+        d.port(), verb::post, "/v1/jobs",
+        radiant::test::read_text(std::string(RADIANT_TEST_DATA) + "/bad/unknown-material.json"));
+    EXPECT_EQ(bad_scene.status, 400u);
+    EXPECT_EQ(json::parse(bad_scene.body)["error"]["pointer"], "/surfaces/0/material");
+
+    const auto too_large = http_call(d.port(), verb::post, "/v1/jobs", std::string(100001, ' '));
+    EXPECT_EQ(too_large.status, 413u);
+    EXPECT_EQ(json::parse(too_large.body)["error"]["code"], "too_large");
+
+    EXPECT_EQ(http_call(d.port(), verb::get, "/v1/jobs/0123").status, 404u);
+    EXPECT_EQ(http_call(d.port(), verb::get, "/healthz").status, 200u);
+    const auto big_header = http_call(d.port(), verb::get, "/healthz", "",
+                                      {{"X-Padding", std::string(17 * 1024, 'x')}});
+    EXPECT_EQ(big_header.status, 431u);
+    const auto metrics = http_call(d.port(), verb::get, "/metrics");
+    EXPECT_NE(metrics.body.find("radiant_jobs{state=\"done\"} 1"), std::string::npos);
+}
+
+TEST_F(DaemonTest, QueueFullCancelAndStreamOfARunningJob) {
+    Daemon d(data(), {"--queue-limit", "1"}, log());
+    const std::string slow = post(d, radiant::test::slow_room());
+    ASSERT_EQ(wait_for(d, slow, "running")["status"], "running");
+    const std::string queued = post(d, radiant::test::tiny_room());
+    const auto full = http_call(d.port(), verb::post, "/v1/jobs", radiant::test::tiny_room());
+    EXPECT_EQ(full.status, 429u);
+    EXPECT_EQ(full.headers.at("Retry-After"), "5");
+
+    // Stream the running job while another client cancels it.
+    std::thread canceller([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(500));
+        http_call(d.port(), verb::delete_, "/v1/jobs/" + slow);
+    });
+    const auto events = http_call(d.port(), verb::get, "/v1/jobs/" + slow + "/events");
+    canceller.join();
+    EXPECT_NE(events.body.find("event: progress"), std::string::npos) << events.body;
+    EXPECT_NE(events.body.find("\"status\":\"cancelled\"}\n\n"), std::string::npos) << events.body;
+    EXPECT_EQ(http_call(d.port(), verb::get, "/v1/jobs/" + slow + "/result").status, 200u);
+    // The queued job runs once the worker is free.
+    EXPECT_EQ(wait_for(d, queued, "done")["status"], "done");
+}
+
+TEST_F(DaemonTest, KillNineLosesNoAcceptedJob) {
+    std::string slow, queued;
+    {
+        Daemon d(data(), {}, log());
+        slow = post(d, radiant::test::slow_room(1));
+        ASSERT_EQ(wait_for(d, slow, "running")["status"], "running");
+        queued = post(d, radiant::test::tiny_room());
+        d.stop(SIGKILL);
+    }
+    Daemon d(data(), {}, log());
+    EXPECT_EQ(wait_for(d, queued, "done")["status"], "done");
+    EXPECT_EQ(wait_for(d, slow, "done")["status"], "done");  // ran again, up to its 1 s limit
+}
+
+TEST_F(DaemonTest, SigtermStopsCleanly) {
+    Daemon d(data(), {}, log());
+    const std::string slow = post(d, radiant::test::slow_room());
+    ASSERT_EQ(wait_for(d, slow, "running")["status"], "running");
+    EXPECT_EQ(d.stop(SIGTERM), 0);
+}
+
+}  // namespace
+
+namespace {
+
+/// Runs the built `radiant` CLI with RADIANT_SERVER pointing at `port`; returns exit code and
+/// stdout.
+std::pair<int, std::string> cli(unsigned short port, const std::string& args, const fs::path& dir) {
+    std::string command = "RADIANT_SERVER=http://127.0.0.1:" + std::to_string(port) + " ";
+    command.append(RADIANT_BIN_DIR).append("/radiant ").append(args);
+    command.append(" > '").append((dir / "cli.out").string()).append("' 2>/dev/null");
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+            radiant::test::read_text(dir / "cli.out")};
+}
+
+TEST_F(DaemonTest, CliSubmitWaitStatusWatchResult) {
+    Daemon d(data(), {}, log());
+    const fs::path scene = dir_ / "room.json";
+    { std::ofstream(scene) << radiant::test::tiny_room(); }
+    const auto [wait_code, result] = cli(d.port(), "submit --wait '" + scene.string() + "'", dir_);
+    ASSERT_EQ(wait_code, 0);
+    EXPECT_EQ(json::parse(result)["status"], "converged");
+
+    const auto [submit_code, id_line] = cli(d.port(), "submit '" + scene.string() + "'", dir_);
+    ASSERT_EQ(submit_code, 0);
+    const std::string id = id_line.substr(0, id_line.find('\n'));
+    EXPECT_EQ(id.size(), 32u);
+    const auto [watch_code, watched] = cli(d.port(), "watch " + id, dir_);
+    EXPECT_EQ(watch_code, 0);
+    EXPECT_EQ(watched, id + ": done\n");
+    EXPECT_EQ(json::parse(cli(d.port(), "status " + id, dir_).second)["status"], "done");
+    EXPECT_EQ(json::parse(cli(d.port(), "result " + id, dir_).second)["format"],
+              "radiant-result/1");
+    EXPECT_EQ(cli(d.port(), "status 0000", dir_).first, 2);
+}
+
+}  // namespace

@@ -1,0 +1,324 @@
+// The HTTP API through Router::route, without sockets: status codes, bodies, and the job life
+// cycle with a real queue, store and worker.
+#include "radiant/server/router.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <thread>
+
+#include "radiant/proto/scene_json.h"
+#include "radiant/server/config.h"
+#include "radiant/server/event_stream.h"
+#include "service_scenes.h"
+#include "test_files.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace radiant::server;
+using nlohmann::json;
+
+/// A store in a fresh temp directory, a queue with one worker, and the router over them.
+class Service {
+public:
+    explicit Service(JobQueueOptions options = {}, std::size_t max_body_bytes = 1 << 20)
+        : dir_(fs::temp_directory_path() /
+               ("radiant_router_test_" + std::to_string(getpid()) + "_" + std::to_string(++n_))) {
+        fs::remove_all(dir_);
+        store_ = std::make_unique<JobStore>(dir_);
+        jobs_ = std::make_unique<JobQueue>(*store_, metrics_, options);
+        ctx_ = std::make_unique<ServiceContext>(
+            ServiceContext{*jobs_, *store_, metrics_, max_body_bytes});
+        router_ = std::make_unique<Router>(*ctx_);
+    }
+    ~Service() {
+        jobs_->shutdown();
+        router_.reset();
+        jobs_.reset();
+        store_.reset();
+        fs::remove_all(dir_);
+    }
+
+    RouteResult call(http::verb method, const std::string& target, const std::string& body = "",
+                     const std::string& idempotency_key = "") {
+        Request request{method, target, 11};
+        if (!idempotency_key.empty()) request.set("Idempotency-Key", idempotency_key);
+        request.body() = body;
+        request.prepare_payload();
+        return router_->route(request);
+    }
+    Response get(const std::string& target) { return call(http::verb::get, target).response; }
+    Response post(const std::string& body, const std::string& key = "") {
+        return call(http::verb::post, "/v1/jobs", body, key).response;
+    }
+    Response del(const std::string& target) { return call(http::verb::delete_, target).response; }
+
+    /// Polls GET /v1/jobs/{id} until its status is `want` or `seconds` pass.
+    json wait_for(const std::string& id, const std::string& want, double seconds = 15) {
+        const auto deadline =
+            std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        json job;
+        do {
+            job = json::parse(get("/v1/jobs/" + id).body());
+            if (job["status"] == want) return job;
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        } while (std::chrono::steady_clock::now() < deadline);
+        return job;
+    }
+
+    JobQueue& jobs() { return *jobs_; }
+    JobStore& store() { return *store_; }
+    Metrics& metrics() { return metrics_; }
+    const fs::path& dir() const { return dir_; }
+
+private:
+    static inline int n_ = 0;
+    fs::path dir_;
+    Metrics metrics_;
+    std::unique_ptr<JobStore> store_;
+    std::unique_ptr<JobQueue> jobs_;
+    std::unique_ptr<ServiceContext> ctx_;
+    std::unique_ptr<Router> router_;
+};
+
+std::string id_of(const Response& response) { return json::parse(response.body())["id"]; }
+
+TEST(Router, GoodSceneIsAcceptedAndSolved) {
+    Service s;
+    const Response posted = s.post(radiant::test::tiny_room());
+    ASSERT_EQ(posted.result(), http::status::accepted) << posted.body();
+    const std::string id = id_of(posted);
+    EXPECT_EQ(id.size(), 32u);
+    EXPECT_EQ(json::parse(posted.body())["status"], "queued");
+    EXPECT_EQ(posted[http::field::location], "/v1/jobs/" + id);
+
+    const json job = s.wait_for(id, "done");
+    ASSERT_EQ(job["status"], "done") << job.dump();
+    EXPECT_EQ(job["progress"]["fraction"], 1.0);
+    EXPECT_TRUE(job["created"].is_string());
+    EXPECT_TRUE(job["finished"].get<std::string>().ends_with("Z"));
+
+    const Response result = s.get("/v1/jobs/" + id + "/result");
+    ASSERT_EQ(result.result(), http::status::ok);
+    const json doc = json::parse(result.body());
+    EXPECT_EQ(doc["format"], "radiant-result/1");
+    EXPECT_EQ(doc["status"], "converged");
+    EXPECT_GT(doc["sensors"][0]["average"].get<double>(), 0);
+}
+
+TEST(Router, BadJsonIs400) {
+    Service s;
+    const Response r = s.post("{not json");
+    EXPECT_EQ(r.result(), http::status::bad_request);
+    EXPECT_EQ(json::parse(r.body())["error"]["code"], "invalid_json");
+}
+
+TEST(Router, BadSceneIs400WithTheValidatePointers) {
+    Service s;
+    const std::string text =
+        radiant::test::read_text(std::string(RADIANT_TEST_DATA) + "/bad/unknown-material.json");
+    const Response r = s.post(text);
+    ASSERT_EQ(r.result(), http::status::bad_request);
+    const json error = json::parse(r.body())["error"];
+    EXPECT_EQ(error["code"], "invalid_scene");
+    const auto expected = radiant::proto::parse_scene(text).problems;
+    ASSERT_FALSE(expected.empty());
+    EXPECT_EQ(error["pointer"], expected.front().pointer);
+    EXPECT_EQ(error["message"], expected.front().message);
+    EXPECT_EQ(error["problems"].size(), expected.size());
+}
+
+TEST(Router, TooLargeIs413) {
+    Service s({}, 100);
+    EXPECT_EQ(s.post(radiant::test::tiny_room()).result(), http::status::payload_too_large);
+}
+
+TEST(Router, UnknownJobsRoutesAndMethods) {
+    Service s;
+    EXPECT_EQ(s.get("/v1/jobs/nope").result(), http::status::not_found);
+    EXPECT_EQ(s.get("/v1/jobs/nope/result").result(), http::status::not_found);
+    EXPECT_EQ(s.del("/v1/jobs/nope").result(), http::status::not_found);
+    EXPECT_EQ(s.get("/v1/jobs/nope/events").result(), http::status::not_found);
+    EXPECT_EQ(s.get("/nowhere").result(), http::status::not_found);
+    EXPECT_EQ(s.del("/v1/jobs").result(), http::status::method_not_allowed);
+    EXPECT_EQ(json::parse(s.get("/nowhere").body())["error"]["code"], "not_found");
+}
+
+TEST(Router, FullQueueIs429WithRetryAfterAndCancelWorks) {
+    JobQueueOptions options;
+    options.queue_limit = 1;
+    Service s(options);
+    const std::string running = id_of(s.post(radiant::test::slow_room()));
+    ASSERT_EQ(s.wait_for(running, "running")["status"], "running");
+    const std::string queued = id_of(s.post(radiant::test::tiny_room()));
+    const Response full = s.post(radiant::test::tiny_room());
+    EXPECT_EQ(full.result(), http::status::too_many_requests);
+    EXPECT_EQ(full[http::field::retry_after], "5");
+    EXPECT_EQ(json::parse(full.body())["error"]["code"], "queue_full");
+    EXPECT_EQ(s.get("/v1/jobs/" + queued + "/result").result(), http::status::not_found);
+
+    // A queued job is cancelled at once; a running one within about a second.
+    const Response cancelled_queued = s.del("/v1/jobs/" + queued);
+    EXPECT_EQ(cancelled_queued.result(), http::status::ok);
+    EXPECT_EQ(json::parse(cancelled_queued.body())["status"], "cancelled");
+    const auto asked = std::chrono::steady_clock::now();
+    EXPECT_EQ(s.del("/v1/jobs/" + running).result(), http::status::accepted);
+    EXPECT_EQ(s.wait_for(running, "cancelled", 5)["status"], "cancelled");
+    EXPECT_LT(std::chrono::steady_clock::now() - asked, std::chrono::seconds(2));
+    // The best result so far stays readable.
+    const Response result = s.get("/v1/jobs/" + running + "/result");
+    ASSERT_EQ(result.result(), http::status::ok);
+    EXPECT_EQ(json::parse(result.body())["format"], "radiant-result/1");
+}
+
+TEST(Router, RunningResultIsAProgressSnapshot) {
+    Service s;
+    const std::string id = id_of(s.post(radiant::test::slow_room()));
+    ASSERT_EQ(s.wait_for(id, "running")["status"], "running");
+    const json doc = json::parse(s.get("/v1/jobs/" + id + "/result").body());
+    EXPECT_EQ(doc["status"], "running");
+    EXPECT_EQ(doc["scene"], "tiny-room");
+    EXPECT_TRUE(doc["stats"].contains("iterations"));
+    s.del("/v1/jobs/" + id);
+}
+
+TEST(Router, IdempotencyKeyReturnsTheSameJob) {
+    Service s;
+    const std::string a = id_of(s.post(radiant::test::tiny_room(), "key-1"));
+    const std::string b = id_of(s.post(radiant::test::tiny_room(), "key-1"));
+    const std::string c = id_of(s.post(radiant::test::tiny_room(), "key-2"));
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a, c);
+}
+
+TEST(Router, ListIsNewestFirstAndPaged) {
+    Service s;
+    std::vector<std::string> ids;
+    for (int i = 0; i < 3; ++i) ids.push_back(id_of(s.post(radiant::test::tiny_room())));
+    const json first = json::parse(s.get("/v1/jobs?limit=2").body());
+    ASSERT_EQ(first["jobs"].size(), 2u);
+    EXPECT_EQ(first["jobs"][0]["id"], ids[2]);
+    EXPECT_EQ(first["jobs"][1]["id"], ids[1]);
+    ASSERT_EQ(first["next"], ids[1]);
+    const json second =
+        json::parse(s.get("/v1/jobs?limit=2&after=" + first["next"].get<std::string>()).body());
+    ASSERT_EQ(second["jobs"].size(), 1u);
+    EXPECT_EQ(second["jobs"][0]["id"], ids[0]);
+    EXPECT_TRUE(second["next"].is_null());
+    EXPECT_EQ(s.get("/v1/jobs?limit=0").result(), http::status::bad_request);
+    for (const std::string& id : ids) s.wait_for(id, "done");
+}
+
+TEST(Router, ShuttingDownIs503) {
+    Service s;
+    s.jobs().shutdown();
+    const Response r = s.post(radiant::test::tiny_room());
+    EXPECT_EQ(r.result(), http::status::service_unavailable);
+    EXPECT_EQ(json::parse(r.body())["error"]["code"], "shutting_down");
+    EXPECT_EQ(s.get("/healthz").result(), http::status::service_unavailable);
+}
+
+TEST(Router, HealthAndMetrics) {
+    Service s;
+    EXPECT_EQ(s.get("/healthz").result(), http::status::ok);
+    s.metrics().count_request(200);
+    const std::string text = s.get("/metrics").body();
+    for (const char* name : {"radiant_jobs{state=\"queued\"} 0", "radiant_queue_length 0",
+                             "radiant_solve_seconds_total", "radiant_rays_total",
+                             "radiant_http_requests_total{status=\"200\"} 1"}) {
+        EXPECT_NE(text.find(name), std::string::npos) << name << "\n" << text;
+    }
+}
+
+TEST(Router, EventsStartAStreamForKnownJobs) {
+    Service s;
+    const std::string id = id_of(s.post(radiant::test::tiny_room()));
+    RouteResult r = s.call(http::verb::get, "/v1/jobs/" + id + "/events");
+    ASSERT_TRUE(r.events);
+    EXPECT_EQ(r.events->job_id, id);
+    EXPECT_EQ(r.response[http::field::content_type], "text/event-stream");
+    s.wait_for(id, "done");
+}
+
+TEST(JobQueue, UnfinishedJobsRunAgainAfterRestart) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("radiant_requeue_test_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    JobRecord job;
+    job.id = new_job_id();
+    job.scene_json = radiant::test::tiny_room();
+    job.created = now_millis();
+    {
+        JobStore store(dir);
+        store.insert(job);
+        store.mark_running(job.id, now_millis());  // as if the process died mid-solve
+    }
+    {
+        JobStore store(dir);
+        Metrics metrics;
+        JobQueue queue(store, metrics, {});
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
+        while (queue.find(job.id)->status != JobStatus::done &&
+               std::chrono::steady_clock::now() < deadline) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        EXPECT_EQ(queue.find(job.id)->status, JobStatus::done);
+        EXPECT_TRUE(store.result(job.id).has_value());
+    }
+    fs::remove_all(dir);
+}
+
+TEST(EventStream, ProgressThenDoneOnce) {
+    EventStream stream;
+    JobRecord job;
+    job.id = "abc";
+    job.status = JobStatus::running;
+    EXPECT_EQ(stream.next(job), "");  // nothing reported yet
+    job.progress.sequence = 3;
+    job.progress.fraction = 0.5;
+    const std::string progress = stream.next(job);
+    EXPECT_TRUE(progress.starts_with("event: progress\nid: 3\ndata: {")) << progress;
+    EXPECT_TRUE(progress.ends_with("}\n\n"));
+    EXPECT_EQ(stream.next(job), "");  // unchanged: nothing new
+    job.status = JobStatus::done;
+    job.progress.sequence = 4;
+    const std::string end = stream.next(job);
+    EXPECT_NE(end.find("event: progress\nid: 4\n"), std::string::npos);
+    EXPECT_NE(end.find("event: done\ndata: {\"id\":\"abc\",\"status\":\"done\"}\n\n"),
+              std::string::npos);
+    EXPECT_TRUE(stream.finished());
+    EXPECT_EQ(stream.next(job), "");
+}
+
+TEST(EventStream, LastEventIdSkipsWhatTheClientHas) {
+    EventStream stream(5);
+    JobRecord job;
+    job.id = "abc";
+    job.status = JobStatus::running;
+    job.progress.sequence = 5;
+    EXPECT_EQ(stream.next(job), "");
+    job.progress.sequence = 6;
+    EXPECT_NE(stream.next(job).find("id: 6"), std::string::npos);
+}
+
+TEST(Query, ParsesAndDecodes) {
+    const Query q = parse_query("limit=5&after=a%20b&flag&x=1+2");
+    EXPECT_EQ(q.at("limit"), "5");
+    EXPECT_EQ(q.at("after"), "a b");
+    EXPECT_EQ(q.at("flag"), "");
+    EXPECT_EQ(q.at("x"), "1 2");
+}
+
+TEST(Config, ParseListen) {
+    EXPECT_EQ(parse_listen("127.0.0.1:8080")->port, 8080);
+    EXPECT_EQ(parse_listen("[::1]:0")->host, "::1");
+    EXPECT_FALSE(parse_listen("localhost"));
+    EXPECT_FALSE(parse_listen("a:99999"));
+    EXPECT_EQ(iso8601(0), "1970-01-01T00:00:00.000Z");
+}
+
+}  // namespace
