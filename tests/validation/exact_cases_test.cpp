@@ -217,6 +217,52 @@ TEST(PointLuminaireDirect, LambertianAimedDown) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// §5.8 a tiny, very bright emitter: 1 cm × 1 cm, L = 1e7 cd/m², 2 m above the floor of a black
+// 4 × 4 × 3 m room. Floor illuminance from Lambert's formula (§1.5); nadir 249.998 lx.
+
+// Lambert's point-to-polygon factor for a receiver at x with normal n (polygon in front of it).
+double lambert_factor(const Vec3& x, const Vec3& n, const Polygon& poly) {
+    double sum = 0;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Vec3 a = poly[i] - x;
+        const Vec3 b = poly[(i + 1) % poly.size()] - x;
+        const Vec3 c = cross(a, b);
+        const double gamma = std::atan2(length(c), dot(a, b));
+        sum += gamma * dot(n, c) / length(c);
+    }
+    return std::abs(sum) / (2 * std::numbers::pi);
+}
+
+TEST(TinyBrightEmitter, FloorIlluminanceAndFlux) {
+    const double luminance = 1e7;
+    const double exitance = std::numbers::pi * luminance;
+    Scene scene;
+    scene.name = "tiny-led";
+    scene.materials = {testing::gray("black", 0.0), testing::gray("led", 0.0, exitance)};
+    const Polygon led = testing::ceiling_rect(1.995, 2.005, 1.995, 2.005, 2.0);
+    scene.surfaces = {testing::box_surface("room", "black", {0, 0, 0}, {4, 4, 3}, true),
+                      testing::polygon_surface("led", "led", led)};
+    const std::vector<Vec3> points{{2, 2, 0}, {2.5, 2, 0}, {1, 1, 0}, {3.5, 0.5, 0}};
+    scene.sensors = {testing::sensor_points("floor", points)};
+    const Result r = solve_default(scene);
+    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+    const auto* floor = find_sensor(r, "floor");
+    ASSERT_NE(floor, nullptr);
+    ASSERT_EQ(floor->illuminance.size(), points.size());
+    EXPECT_NEAR(floor->illuminance[0] / 249.99791668489573, 1.0, 0.005)
+        << "nadir " << floor->illuminance[0] << " lx, exact 249.998 lx";
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double exact = exitance * lambert_factor(points[i], {0, 0, 1}, led);
+        EXPECT_NEAR(floor->illuminance[i] / exact, 1.0, 0.01)
+            << "point " << i << ": " << floor->illuminance[i] << " lx, exact " << exact << " lx";
+    }
+    const double flux = exitance * 1e-4;  // π L A = 3141.59 lm
+    EXPECT_NEAR(r.stats.emitted_flux_lm / flux, 1.0, 1e-9);
+    EXPECT_NEAR(r.stats.absorbed_flux_lm / flux, 1.0, 1e-3)
+        << "absorbed " << r.stats.absorbed_flux_lm << " lm, emitted " << flux << " lm";
+}
+
+// ---------------------------------------------------------------------------------------------
 // §5.4 light leaks: two 4 × 4 × 3 rooms sharing a wall; floor and ceiling polygons span both.
 
 Scene two_rooms(double wall) {
