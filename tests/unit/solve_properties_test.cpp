@@ -3,6 +3,7 @@
 // works and bad input fails cleanly.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -167,6 +168,70 @@ TEST(Invariance, Millimetres) {
                      base.surfaces[i].name + " area");
     }
     expect_same_values(scaled, base, 1e-3, "millimetres");
+}
+
+// Metamorphic checks (§5.11): scaling every source by k scales every result by k; the order of
+// the input surfaces does not matter; a mirror image gives the mirrored answer.
+
+TEST(Metamorphic, ScalingSourcesScalesResults) {
+    const Scene scene = small_room();
+    const Result base = solve(scene, invariance_options());
+    Scene brighter = scene;
+    for (auto& m : brighter.materials) {
+        if (m.emission) m.emission->value *= 10;
+    }
+    for (auto& l : brighter.luminaires) l.flux_lm *= 10;
+    const Result r = solve(brighter, invariance_options());
+    ASSERT_EQ(base.status, SolveStatus::converged) << base.error;
+    ASSERT_EQ(r.status, SolveStatus::converged) << r.error;
+    Result scaled = base;
+    for (auto& s : scaled.surfaces) {
+        s.average_radiosity *= 10;
+        s.average_irradiance *= 10;
+    }
+    for (auto& set : scaled.sensors) {
+        for (double& v : set.illuminance) v *= 10;
+    }
+    expect_same_values(r, scaled, 1e-9, "sources x10");
+}
+
+std::vector<SurfaceResult> by_name(std::vector<SurfaceResult> v) {
+    std::sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+    return v;
+}
+
+TEST(Metamorphic, SurfaceOrderDoesNotMatter) {
+    const Scene scene = small_room();
+    Result base = solve(scene, invariance_options());
+    Scene reversed = scene;
+    std::reverse(reversed.surfaces.begin(), reversed.surfaces.end());
+    Result r = solve(reversed, invariance_options());
+    ASSERT_EQ(base.status, SolveStatus::converged) << base.error;
+    ASSERT_EQ(r.status, SolveStatus::converged) << r.error;
+    base.surfaces = by_name(base.surfaces);
+    r.surfaces = by_name(r.surfaces);
+    expect_same_values(r, base, 1e-9, "reversed input");
+}
+
+TEST(Metamorphic, MirrorImage) {
+    const Scene scene = small_room();
+    const Result base = solve(scene, invariance_options());
+    Scene mirrored = scene;  // x → 4 − x; polygons reversed to keep their fronts
+    for (auto& s : mirrored.surfaces) {
+        auto& poly = std::get<Polygon>(s.geometry);
+        for (auto& v : poly) v.x = 4 - v.x;
+        std::reverse(poly.begin(), poly.end());
+    }
+    for (auto& l : mirrored.luminaires) l.position.x = 4 - l.position.x;
+    for (auto& set : mirrored.sensors) {
+        for (auto& v : set.points) v.x = 4 - v.x;
+        set.normal.x = -set.normal.x;
+    }
+    const Result r = solve(mirrored, invariance_options());
+    ASSERT_EQ(base.status, SolveStatus::converged) << base.error;
+    ASSERT_EQ(r.status, SolveStatus::converged) << r.error;
+    // Sensor points were mirrored in place, so point k still corresponds to point k.
+    expect_same_values(r, base, 1e-3, "mirrored");
 }
 
 // (c) ---------------------------------------------------------------------------------------------
