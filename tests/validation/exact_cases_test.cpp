@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ struct FurnaceCase {
     double rho;
     double rel_tol;
 };
+
+void PrintTo(const FurnaceCase& c, std::ostream* os) {
+    *os << "rho " << c.rho << ", tolerance " << c.rel_tol;
+}
 
 class FurnaceCube : public ::testing::TestWithParam<FurnaceCase> {};
 
@@ -116,6 +121,10 @@ struct LRoomCase {
     double degrees;
     bool single_polygon;
 };
+
+void PrintTo(const LRoomCase& c, std::ostream* os) {
+    *os << c.degrees << " deg, " << (c.single_polygon ? "L polygon" : "rectangles");
+}
 
 class FurnaceLRoom : public ::testing::TestWithParam<LRoomCase> {};
 
@@ -452,6 +461,10 @@ struct SealedCase {
     double wall;
     double degrees;
 };
+
+void PrintTo(const SealedCase& c, std::ostream* os) {
+    *os << "wall " << c.wall << " m, " << c.degrees << " deg";
+}
 
 class SealedNeighbour : public ::testing::TestWithParam<SealedCase> {};
 
