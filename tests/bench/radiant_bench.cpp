@@ -32,7 +32,7 @@ using radiant::Result;
 constexpr const char* kRoomScene = "room-s2";
 
 struct Row {
-    std::string scene, method, status;
+    std::string scene, method, status, worst;
     double tolerance = 0, seconds = 0, error_estimate = 0, true_error = 0;
     std::uint64_t rays = 0;
     std::size_t patches = 0, iterations = 0;
@@ -54,13 +54,21 @@ const radiant::SensorResult* find_sensor(const Result& r, const std::string& nam
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+struct TrueError {
+    double value = 0;
+    std::string worst;  ///< which check gave `value`
+};
+
 // Largest error over a scene's expected.json checks; NaN when a check cannot be evaluated.
-double checks_error(const Result& result, const nlohmann::json& checks) {
-    double worst = 0;
+TrueError checks_error(const Result& result, const nlohmann::json& checks) {
+    TrueError out;
     for (const auto& check : checks) {
         const std::string what = check.at("what");
         double err = kNaN;
+        std::string label = what;
         if (what == "surface") {
+            label = check.at("surface").get<std::string>() + " " +
+                    (check.at("field") == "average_irradiance" ? "H" : "B");
             if (const auto* s = find_surface(result, check.at("surface"))) {
                 const double got = check.at("field") == "average_irradiance" ? s->average_irradiance
                                                                              : s->average_radiosity;
@@ -69,14 +77,15 @@ double checks_error(const Result& result, const nlohmann::json& checks) {
         } else if (what == "energy") {
             err = std::abs(result.stats.absorbed_flux_lm / result.stats.emitted_flux_lm - 1.0);
         } else if (what == "sensor-max") {
+            label = check.at("sensor").get<std::string>() + " max/lit";
             const auto* dark = find_sensor(result, check.at("sensor"));
             const auto* lit = find_sensor(result, check.at("max_relative_to"));
             if (dark && lit && lit->average > 0) err = std::abs(dark->max / lit->average);
         }
-        if (!(err <= std::numeric_limits<double>::max())) return kNaN;
-        worst = std::max(worst, err);
+        if (!(err <= std::numeric_limits<double>::max())) return {kNaN, label};
+        if (err >= out.value) out = {err, label};
     }
-    return worst;
+    return out;
 }
 
 std::vector<double> read_reference(const fs::path& csv) {
@@ -92,9 +101,11 @@ std::vector<double> read_reference(const fs::path& csv) {
     return values;
 }
 
-double room_error(const Result& result, const std::vector<double>& reference) {
+TrueError room_error(const Result& result, const std::vector<double>& reference) {
     const auto* plane = find_sensor(result, "workplane");
-    if (!plane || plane->illuminance.size() != reference.size() || reference.empty()) return kNaN;
+    if (!plane || plane->illuminance.size() != reference.size() || reference.empty()) {
+        return {kNaN, "workplane nRMS"};
+    }
     double sq = 0, mean = 0;
     for (std::size_t i = 0; i < reference.size(); ++i) {
         const double d = plane->illuminance[i] - reference[i];
@@ -102,7 +113,7 @@ double room_error(const Result& result, const std::vector<double>& reference) {
         mean += reference[i];
     }
     const double n = static_cast<double>(reference.size());
-    return std::sqrt(sq / n) / (mean / n);
+    return {std::sqrt(sq / n) / (mean / n), "workplane nRMS"};
 }
 
 std::string fixed(double v, int digits) {
@@ -129,12 +140,13 @@ std::vector<std::string> cells(const Row& r) {
             std::to_string(r.iterations),
             sci(r.error_estimate),
             sci(r.true_error),
+            r.worst,
             r.status};
 }
 
-const std::vector<std::string> kHeader{"scene",      "method",  "tolerance",  "seconds",
-                                       "rays",       "patches", "iterations", "error estimate",
-                                       "true error", "status"};
+const std::vector<std::string> kHeader{"scene",      "method",      "tolerance",  "seconds",
+                                       "rays",       "patches",     "iterations", "error estimate",
+                                       "true error", "worst check", "status"};
 
 void print_markdown(std::ostream& out, const std::vector<std::string>& row) {
     out << '|';
@@ -206,7 +218,9 @@ int main(int argc, char** argv) {
 
     print_markdown(std::cout, kHeader);
     std::cout << '|';
-    for (std::size_t i = 0; i < kHeader.size(); ++i) std::cout << (i < 2 ? " --- |" : " ---: |");
+    for (std::size_t i = 0; i < kHeader.size(); ++i) {
+        std::cout << (i < 2 || i + 2 >= kHeader.size() ? " --- |" : " ---: |");
+    }
     std::cout << '\n' << std::flush;
 
     bool all_ok = true;
@@ -250,8 +264,10 @@ int main(int argc, char** argv) {
                     row.true_error = kNaN;
                     all_ok = false;
                 } else {
-                    row.true_error =
+                    const TrueError e =
                         room ? room_error(result, reference) : checks_error(result, expected[name]);
+                    row.true_error = e.value;
+                    row.worst = e.worst;
                 }
                 const auto c = cells(row);
                 print_markdown(std::cout, c);

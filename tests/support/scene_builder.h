@@ -1,6 +1,7 @@
 // Test helpers: build small radiant::Scene values in code (rooms, panels, luminaires, sensors).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -113,6 +114,78 @@ inline SensorSet sensor_grid(const std::string& name, Vec3 origin, Vec3 u, Vec3 
         }
     }
     return sensor_points(name, std::move(points), normal);
+}
+
+/// The six faces of the box [min, max], normals inward (a room) or outward (an object).
+inline std::vector<Polygon> box_faces(Vec3 lo, Vec3 hi, bool facing_in) {
+    const Vec3 d = hi - lo;
+    std::vector<Polygon> faces{
+        rect(lo, {d.x, 0, 0}, {0, d.y, 0}),                  // z = lo, normal +z
+        rect({lo.x, lo.y, hi.z}, {0, d.y, 0}, {d.x, 0, 0}),  // z = hi, normal −z
+        rect(lo, {0, 0, d.z}, {d.x, 0, 0}),                  // y = lo, normal +y
+        rect({lo.x, hi.y, lo.z}, {d.x, 0, 0}, {0, 0, d.z}),  // y = hi, normal −y
+        rect(lo, {0, d.y, 0}, {0, 0, d.z}),                  // x = lo, normal +x
+        rect({hi.x, lo.y, lo.z}, {0, 0, d.z}, {0, d.y, 0}),  // x = hi, normal −x
+    };
+    if (!facing_in) {
+        for (auto& f : faces) std::reverse(f.begin(), f.end());
+    }
+    return faces;
+}
+
+/// Replaces every box surface by six polygon surfaces named "<name>/0" … "<name>/5".
+inline Scene boxes_as_polygons(Scene scene) {
+    std::vector<Surface> out;
+    for (auto& s : scene.surfaces) {
+        if (const auto* box = std::get_if<BoxGeometry>(&s.geometry)) {
+            const auto faces = box_faces(box->min, box->max, box->facing_in);
+            for (std::size_t k = 0; k < faces.size(); ++k) {
+                out.push_back(
+                    polygon_surface(s.name + "/" + std::to_string(k), s.material, faces[k]));
+            }
+        } else {
+            out.push_back(s);
+        }
+    }
+    scene.surfaces = std::move(out);
+    return scene;
+}
+
+/// The scene rotated by `degrees` about the vertical axis through `centre` (boxes become
+/// polygons first); luminaire aims and sensor normals turn with it.
+inline Scene rotated_about_z(Scene scene, double degrees, Vec3 centre) {
+    scene = boxes_as_polygons(std::move(scene));
+    const double a = degrees * 3.14159265358979323846 / 180.0;
+    const double c = std::cos(a), s = std::sin(a);
+    auto turn = [&](const Vec3& v) { return Vec3{c * v.x - s * v.y, s * v.x + c * v.y, v.z}; };
+    auto move = [&](const Vec3& p) { return centre + turn(p - centre); };
+    for (auto& surf : scene.surfaces) {
+        if (auto* poly = std::get_if<Polygon>(&surf.geometry)) {
+            for (auto& p : *poly) p = move(p);
+        } else if (auto* mesh = std::get_if<MeshGeometry>(&surf.geometry)) {
+            for (auto& p : mesh->vertices) p = move(p);
+        }
+    }
+    for (auto& l : scene.luminaires) {
+        l.position = move(l.position);
+        l.aim = turn(l.aim);
+    }
+    for (auto& set : scene.sensors) {
+        for (auto& p : set.points) p = move(p);
+        set.normal = turn(set.normal);
+    }
+    return scene;
+}
+
+/// Area-weighted mean radiosity over the surfaces whose names start with `prefix`.
+inline double mean_radiosity_of(const Result& r, const std::string& prefix) {
+    double sum = 0, area = 0;
+    for (const auto& s : r.surfaces) {
+        if (s.name.rfind(prefix, 0) != 0) continue;
+        sum += s.area_m2 * s.average_radiosity;
+        area += s.area_m2;
+    }
+    return area > 0 ? sum / area : 0;
 }
 
 /// Area-weighted mean radiosity over all surfaces of a result.

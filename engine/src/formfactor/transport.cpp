@@ -50,13 +50,14 @@ Transport::Transport(const PreparedScene& scene, const PatchMesh& patches,
 
 bool Transport::patch_emits(std::size_t j) const {
     const PatchGeometry& p = patches_.patch(j);
-    return !p.back_side && scene_.materials[static_cast<std::size_t>(p.material)].emits();
+    return !p.back_side && !p.hidden && scene_.materials[static_cast<std::size_t>(p.material)].emits();
 }
 
 // Light passes from j to i only when each lies (partly) in front of the other.
 bool Transport::faces_each_other(std::size_t i, std::size_t j) const {
     const PatchGeometry& a = patches_.patch(i);
     const PatchGeometry& b = patches_.patch(j);
+    if (a.hidden || b.hidden) return false;
     const double eps = 1e-9 * (a.diameter_m + b.diameter_m);
     const bool b_in_front_of_a = std::any_of(b.vertices.begin(), b.vertices.end(), [&](const Vec3& v) {
         return dot(v - a.vertices[0], a.normal) > eps;
@@ -85,6 +86,7 @@ double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, 
 double Transport::point_to_patch(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
                                  std::uint64_t& rays) const {
     const PatchGeometry& src = patches_.patch(j);
+    if (src.hidden) return 0;
     const double f = front_factor(x, n, src);
     if (f <= 0) return 0;
     if (!culling_.maybe_blocked_from_point(x, n, src.piece, src.vertices, src.normal)) return f;
@@ -147,6 +149,7 @@ void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays) 
 Rgb Transport::luminaire_irradiance_on_patch(std::size_t i, std::uint64_t& rays) const {
     Rgb e{0, 0, 0};
     const PatchGeometry& p = patches_.patch(i);
+    if (p.hidden) return e;
     const auto& rule = rules_[i];
     const double eps = visibility_.epsilon();
     for (std::size_t li = 0; li < scene_.luminaires.size(); ++li) {

@@ -108,6 +108,19 @@ void subdivide_piece(const Piece& piece, double h, std::vector<Poly>& out) {
     }
 }
 
+// A parallel piece q closer to r than `near` (a panel hung 1 mm under a ceiling, a rug on a
+// floor) shades the region of r under it: r is cut along q's projected outline, so that no patch
+// straddles the shaded region's edge and radiates into the gap from its lit part.
+void parallel_outline(const Piece& r, const Piece& q, double near, std::vector<Segment>& out) {
+    if (std::abs(dot(q.normal, r.normal)) < 1 - 1e-9) return;
+    const double d = dot(q.vertices[0] - r.vertices[0], r.normal);
+    if (std::abs(d) > near) return;
+    const std::size_t k = q.vertices.size();
+    for (std::size_t i = 0; i < k; ++i) {
+        out.push_back({q.vertices[i] - r.normal * d, q.vertices[(i + 1) % k] - r.normal * d});
+    }
+}
+
 // Where piece q touches or crosses the plane of piece r, as segments in r's plane.
 void contact_segments(const Piece& r, const Piece& q, double eps, std::vector<Segment>& out) {
     const std::size_t k = q.vertices.size();
@@ -189,23 +202,55 @@ void split_along(std::vector<Poly>& patches, const Segment& s, const Vec3& n, do
     patches = std::move(result);
 }
 
-std::vector<std::vector<Segment>> all_contacts(const PreparedScene& scene, double eps) {
+// Piece q overlays piece r when it lies in r's plane, faces the same way and is smaller (equal
+// areas: the later one wins), so that of two coincident surfaces exactly one is seen.
+bool overlays(const Piece& q, std::size_t qi, const Piece& r, std::size_t ri, double eps) {
+    if (dot(q.normal, r.normal) < 1 - 1e-9) return false;
+    for (const Vec3& v : q.vertices) {
+        if (std::abs(dot(v - r.vertices[0], r.normal)) > eps) return false;
+    }
+    return q.area_m2 < r.area_m2 || (q.area_m2 == r.area_m2 && qi > ri);
+}
+
+bool inside_convex(const Vec3& x, const Poly& p, const Vec3& n, double eps) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (dot(cross(p[(i + 1) % p.size()] - p[i], x - p[i]), n) < -eps * length(p[(i + 1) % p.size()] - p[i])) {
+            return false;
+        }
+    }
+    return true;
+}
+
+struct Contacts {
+    std::vector<std::vector<Segment>> segments;  // per piece: lines to split it along
+    std::vector<std::vector<int>> overlays;      // per piece: pieces lying on it
+};
+
+Contacts all_contacts(const PreparedScene& scene, double eps, double near) {
     const std::size_t k = scene.pieces.size();
     std::vector<Box3> box(k);
-    for (std::size_t i = 0; i < k; ++i) box[i] = bounds(scene.pieces[i].vertices, eps);
+    for (std::size_t i = 0; i < k; ++i) box[i] = bounds(scene.pieces[i].vertices, std::max(eps, near));
     // Sweep along x so that the candidate pairs stay near-linear for spread-out scenes.
     std::vector<std::size_t> order(k);
     for (std::size_t i = 0; i < k; ++i) order[i] = i;
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return box[a].lo.x < box[b].lo.x; });
-    std::vector<std::vector<Segment>> contacts(k);
+    Contacts contacts;
+    contacts.segments.resize(k);
+    contacts.overlays.resize(k);
     for (std::size_t oi = 0; oi < k; ++oi) {
         const std::size_t i = order[oi];
         for (std::size_t oj = oi + 1; oj < k && box[order[oj]].lo.x <= box[i].hi.x; ++oj) {
             const std::size_t j = order[oj];
             if (!overlap(box[i], box[j])) continue;
-            contact_segments(scene.pieces[i], scene.pieces[j], eps, contacts[i]);
-            contact_segments(scene.pieces[j], scene.pieces[i], eps, contacts[j]);
+            const Piece& a = scene.pieces[i];
+            const Piece& b = scene.pieces[j];
+            contact_segments(a, b, eps, contacts.segments[i]);
+            contact_segments(b, a, eps, contacts.segments[j]);
+            parallel_outline(a, b, near, contacts.segments[i]);
+            parallel_outline(b, a, near, contacts.segments[j]);
+            if (overlays(b, j, a, i, eps)) contacts.overlays[i].push_back(static_cast<int>(j));
+            if (overlays(a, i, b, j, eps)) contacts.overlays[j].push_back(static_cast<int>(i));
         }
     }
     return contacts;
@@ -266,11 +311,11 @@ PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) 
     }
     target_edge_m_ = h;
 
-    const std::vector<std::vector<Segment>> contacts = all_contacts(scene, eps);
+    const Contacts contacts = all_contacts(scene, eps, 0.5 * h);
     VertexIndex index;
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
         const Piece& piece = scene.pieces[i];
-        for (const Segment& s : contacts[i]) split_along(sub[i], s, piece.normal, eps);
+        for (const Segment& s : contacts.segments[i]) split_along(sub[i], s, piece.normal, eps);
         const bool two_sided =
             scene.materials[static_cast<std::size_t>(piece.material)].two_sided;
         for (int side = 0; side < (two_sided ? 2 : 1); ++side) {
@@ -286,6 +331,10 @@ PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) 
                 g.surface = piece.surface;
                 g.material = piece.material;
                 g.back_side = side == 1;
+                for (const int q : contacts.overlays[i]) {
+                    const Piece& over = scene.pieces[static_cast<std::size_t>(q)];
+                    g.hidden = g.hidden || inside_convex(g.centroid, over.vertices, over.normal, eps);
+                }
                 add_face(g, index);
                 patches_.push_back(std::move(g));
             }

@@ -32,6 +32,9 @@ struct PatchGeometry {
     int surface = 0;
     int material = 0;
     bool back_side = false;  ///< the back of a two-sided surface
+    /// Covered by a smaller coplanar surface facing the same way (a flush panel, a rug): it
+    /// neither receives nor emits, but its area still counts in its surface's averages.
+    bool hidden = false;
 };
 
 struct MeshingOptions {

@@ -160,7 +160,7 @@ Result Pipeline::run() {
         system.area_m2[i] = p.area_m2;
         for (int c = 0; c < channels; ++c) {
             const auto ci = static_cast<std::size_t>(c);
-            const double emitted = p.back_side ? 0.0 : m.exitance_lm_m2[ci];
+            const double emitted = p.back_side || p.hidden ? 0.0 : m.exitance_lm_m2[ci];
             system.reflectance[ci][i] = m.reflectance[ci];
             system.source[ci][i] = emitted + m.reflectance[ci] * luminaire_irradiance[i][ci];
         }
@@ -227,7 +227,7 @@ Result Pipeline::run() {
         for (int c = 0; c < channels; ++c) {
             const auto ci = static_cast<std::size_t>(c);
             absorbed_rgb[ci] = p.area_m2 * (1 - m.reflectance[ci]) * irradiance[ci][i];
-            emitted_rgb[ci] = p.back_side ? 0 : p.area_m2 * m.exitance_lm_m2[ci];
+            emitted_rgb[ci] = p.back_side || p.hidden ? 0 : p.area_m2 * m.exitance_lm_m2[ci];
         }
         absorbed += channels == 1 ? absorbed_rgb[0] : luminance(absorbed_rgb);
         emitted += channels == 1 ? emitted_rgb[0] : luminance(emitted_rgb);
