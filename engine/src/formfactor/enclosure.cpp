@@ -1,5 +1,6 @@
 #include "formfactor/enclosure.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -20,6 +21,35 @@ Vec3 cosine_direction(const Vec3& n, double r1, double r2) {
 }
 
 }  // namespace
+
+double mean_free_path(const PreparedScene& scene, const Visibility& visibility,
+                      std::uint64_t seed, int rays) {
+    if (scene.pieces.empty() || !(scene.total_area_m2 > 0)) return scene.diagonal_m;
+    std::vector<double> cdf;
+    double total = 0;
+    for (const Piece& p : scene.pieces) cdf.push_back(total += p.area_m2);
+    const double eps = visibility.epsilon();
+    const double reach = 4 * scene.diagonal_m + 1;
+    SampleStream rng(seed, 0x6d6670ull, 0);
+    double sum = 0;
+    int hits = 0;
+    for (int r = 0; r < rays; ++r) {
+        // Stratified over the area so that small scenes get a stable estimate.
+        const double pick = (r + rng.next()) / rays * total;
+        const auto at = std::upper_bound(cdf.begin(), cdf.end(), pick) - cdf.begin();
+        const Piece& p = scene.pieces[static_cast<std::size_t>(
+            std::min<std::ptrdiff_t>(at, static_cast<std::ptrdiff_t>(cdf.size()) - 1))];
+        const double u[2] = {rng.next(), rng.next()};
+        const Vec3 x = stratified_points(p.vertices, 1, u)[0] + p.normal * eps;
+        const Vec3 dir = cosine_direction(p.normal, rng.next(), rng.next());
+        const RayHit hit = visibility.intersect(x, dir, reach);
+        if (hit.triangle >= 0) {
+            sum += hit.t;
+            ++hits;
+        }
+    }
+    return hits > 0 ? sum / hits : scene.diagonal_m;
+}
 
 std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& patches,
                                    const Visibility& visibility,

@@ -20,4 +20,11 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
                                    std::span<const int> triangle_piece, std::uint64_t seed,
                                    int rays_per_patch = 16);
 
+/// Mean distance (m) from the surfaces to the next surface along cosine-distributed rays:
+/// the mean free path of light between bounces, over which radiosity varies. It equals 4V/S in
+/// a convex room (Cauchy) and does not depend on the scene's orientation. Rays that escape are
+/// not counted; with no hit at all it is the scene's diagonal. Deterministic in `seed`.
+double mean_free_path(const PreparedScene& scene, const Visibility& visibility,
+                      std::uint64_t seed, int rays = 4096);
+
 }  // namespace radiant

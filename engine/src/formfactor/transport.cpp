@@ -78,7 +78,15 @@ double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, 
     const double eps = visibility_.epsilon();
     const Vec3 from = x + n * eps;
     int seen = 0;
-    for (const Vec3& y : targets) seen += visibility_.visible(from, y + src.normal * eps) ? 1 : 0;
+    for (const Vec3& y : targets) {
+        // Inset the target by 2ε: a blocker standing on the source's edge (a partition on the
+        // floor) must cross the ray farther from its end than the end margin that spares the
+        // source itself, or light leaks under the wall.
+        const Vec3 to_centre = src.centroid - y;
+        const double d = length(to_centre);
+        const Vec3 inset = d > 0 ? y + to_centre * (std::min(2 * eps, 0.5 * d) / d) : y;
+        seen += visibility_.visible(from, inset + src.normal * eps) ? 1 : 0;
+    }
     rays += targets.size();
     return targets.empty() ? 0.0 : seen / static_cast<double>(targets.size());
 }

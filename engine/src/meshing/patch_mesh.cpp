@@ -281,22 +281,9 @@ double polygon_diameter(const Poly& p) {
 
 }  // namespace
 
-double target_patch_edge(const PreparedScene& scene, double tolerance) {
-    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    for (const Piece& p : scene.pieces) {
-        for (const Vec3& v : p.vertices) {
-            for (int a = 0; a < 3; ++a) {
-                lo[a] = std::min(lo[a], v[a]);
-                hi[a] = std::max(hi[a], v[a]);
-            }
-        }
-    }
-    const Vec3 ext = hi - lo;
-    const double volume = ext.x * ext.y * ext.z;
-    double scale = scene.total_area_m2 > 0 ? 4 * volume / scene.total_area_m2 : 0;
-    if (!(scale > 0) || scale > scene.diagonal_m) scale = scene.diagonal_m;
+double target_patch_edge(double mean_free_path_m, double tolerance) {
     const double tol = std::clamp(tolerance, 1e-6, 0.5);
-    return std::max(1.5 * scale * std::sqrt(tol), 1e-9);
+    return std::max(1.5 * mean_free_path_m * std::sqrt(tol), 1e-9);
 }
 
 PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) {

@@ -43,8 +43,8 @@ struct MeshingOptions {
 };
 
 /// Target patch edge from the scene's scale and the tolerance: radiosity varies over the mean
-/// free path 4V/S of the enclosure, and face means converge as O(h²), so h ∝ (4V/S)·√tol.
-double target_patch_edge(const PreparedScene& scene, double tolerance);
+/// free path ℓ of light between surfaces, and face means converge as O(h²), so h ∝ ℓ·√tol.
+double target_patch_edge(double mean_free_path_m, double tolerance);
 
 class PatchMesh {
 public:

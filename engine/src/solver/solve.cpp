@@ -114,12 +114,13 @@ Result Pipeline::run() {
         return result;
     }
     omerr().disable();  // T-junction fallbacks are expected, not errors to print
-    PatchMesh patches(prepared, {target_patch_edge(prepared, options_.tolerance), kMaxDensePatches});
+    const auto [triangles, triangle_piece] = occluder_triangles(prepared);
+    const auto visibility = make_embree_visibility(triangles);
+    const double free_path = mean_free_path(prepared, *visibility, options_.seed);
+    PatchMesh patches(prepared, {target_patch_edge(free_path, options_.tolerance), kMaxDensePatches});
     const std::size_t n = patches.size();
     const int channels = prepared.channels;
 
-    const auto [triangles, triangle_piece] = occluder_triangles(prepared);
-    const auto visibility = make_embree_visibility(triangles);
     const OcclusionCulling culling(prepared);
     TransportOptions transport_options;
     transport_options.seed = options_.seed;

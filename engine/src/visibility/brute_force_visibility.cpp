@@ -13,7 +13,7 @@ constexpr double kSegmentEnd = 1.0 - 1e-6;
 
 /// Möller–Trumbore: ray parameter t where origin + t·dir meets the closed triangle, if any.
 /// Edges count as inside, so a ray through a shared edge hits (no cracks between triangles).
-std::optional<double> intersect(const Triangle& tri, const Vec3& origin, const Vec3& dir) {
+std::optional<double> segment_triangle_t(const Triangle& tri, const Vec3& origin, const Vec3& dir) {
     const Vec3 e1 = tri.b - tri.a;
     const Vec3 e2 = tri.c - tri.a;
     const Vec3 p = cross(dir, e2);
@@ -45,25 +45,25 @@ class BruteForceVisibility final : public Visibility {
         if (!is_finite(from) || !is_finite(to)) return false;  // same rule as Embree
         const Vec3 dir = to - from;
         for (const Triangle& t : triangles_) {
-            const auto hit = intersect(t, from, dir);
+            const auto hit = segment_triangle_t(t, from, dir);
             if (hit && *hit > 0.0 && *hit < kSegmentEnd) return false;
         }
         return true;
     }
 
     /// Thread-safe: reads immutable state only. Ties in t go to the lower input index.
-    int first_hit(const Vec3& origin, const Vec3& direction, double t_max) const override {
-        if (!is_finite(origin) || !is_finite(direction) || !(t_max > 0.0)) return -1;
+    RayHit intersect(const Vec3& origin, const Vec3& direction, double t_max) const override {
+        if (!is_finite(origin) || !is_finite(direction) || !(t_max > 0.0)) return {};
         int best = -1;
         double best_t = t_max;
         for (std::size_t i = 0; i < triangles_.size(); ++i) {
-            const auto hit = intersect(triangles_[i], origin, direction);
+            const auto hit = segment_triangle_t(triangles_[i], origin, direction);
             if (hit && *hit > 0.0 && (*hit < best_t || (best < 0 && *hit == best_t))) {
                 best_t = *hit;
                 best = index_[i];
             }
         }
-        return best;
+        return best < 0 ? RayHit{} : RayHit{best, best_t};
     }
 
   private:

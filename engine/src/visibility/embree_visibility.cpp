@@ -82,7 +82,7 @@ class EmbreeVisibility final : public Visibility {
     bool visible(const Vec3& from, const Vec3& to) const override;
     void visible_batch(std::span<const SegmentQuery> queries,
                        std::span<std::uint8_t> out) const override;
-    int first_hit(const Vec3& origin, const Vec3& direction, double t_max) const override;
+    RayHit intersect(const Vec3& origin, const Vec3& direction, double t_max) const override;
 
   private:
     static void on_error(void* self, RTCError code, const char* message);
@@ -273,8 +273,9 @@ void EmbreeVisibility::visible_batch(std::span<const SegmentQuery> queries,
 }
 
 /// Thread-safe: rtcIntersect1 on a committed scene may run concurrently (Embree manual).
-int EmbreeVisibility::first_hit(const Vec3& origin, const Vec3& direction, double t_max) const {
-    if (!is_finite(origin) || !is_finite(direction) || !(t_max > 0.0)) return -1;
+RayHit EmbreeVisibility::intersect(const Vec3& origin, const Vec3& direction,
+                                   double t_max) const {
+    if (!is_finite(origin) || !is_finite(direction) || !(t_max > 0.0)) return {};
     const FlushDenormalsGuard ftz;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -291,8 +292,8 @@ int EmbreeVisibility::first_hit(const Vec3& origin, const Vec3& direction, doubl
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_.get(), &context, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return -1;
-    return input_index_[rh.hit.primID];
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
+    return {input_index_[rh.hit.primID], static_cast<double>(rh.ray.tfar)};
 }
 
 }  // namespace

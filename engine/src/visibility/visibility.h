@@ -23,6 +23,11 @@ struct SegmentQuery {
     Vec3 to;
 };
 
+struct RayHit {
+    int triangle = -1;
+    double t = 0;
+};
+
 class Visibility {
 public:
     virtual ~Visibility() = default;
@@ -37,10 +42,15 @@ public:
     virtual void visible_batch(std::span<const SegmentQuery> queries,
                                std::span<std::uint8_t> out) const;
 
-    /// Index (into the constructor's triangle list) of the first triangle hit by the ray
-    /// origin + t·direction for t in (0, t_max], or -1. `direction` need not be unit length.
-    /// Thread-safe.
-    virtual int first_hit(const Vec3& origin, const Vec3& direction, double t_max) const = 0;
+    /// The first triangle hit by the ray origin + t·direction for t in (0, t_max]: its index
+    /// (into the constructor's triangle list) and t, or triangle −1. `direction` need not be
+    /// unit length. Thread-safe.
+    virtual RayHit intersect(const Vec3& origin, const Vec3& direction, double t_max) const = 0;
+
+    /// Index of the first triangle hit (see intersect), or −1.
+    int first_hit(const Vec3& origin, const Vec3& direction, double t_max) const {
+        return intersect(origin, direction, t_max).triangle;
+    }
 
     /// Offset (metres) to lift ray endpoints off surfaces: scale-aware, see ray_epsilon().
     double epsilon() const { return epsilon_; }
