@@ -77,7 +77,8 @@ double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, 
     const std::vector<Vec3> targets = stratified_points(src.vertices, m, u);
     const double eps = visibility_.epsilon();
     const Vec3 from = x + n * eps;
-    int seen = 0;
+    std::vector<SegmentQuery> queries;
+    queries.reserve(targets.size());
     for (const Vec3& y : targets) {
         // Inset the target by 2ε: a blocker standing on the source's edge (a partition on the
         // floor) must cross the ray farther from its end than the end margin that spares the
@@ -85,10 +86,15 @@ double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, 
         const Vec3 to_centre = src.centroid - y;
         const double d = length(to_centre);
         const Vec3 inset = d > 0 ? y + to_centre * (std::min(2 * eps, 0.5 * d) / d) : y;
-        seen += visibility_.visible(from, inset + src.normal * eps) ? 1 : 0;
+        queries.push_back({from, inset + src.normal * eps});
     }
-    rays += targets.size();
-    return targets.empty() ? 0.0 : seen / static_cast<double>(targets.size());
+    // One shaft of rays: the backend traces it as a coherent packet.
+    std::vector<std::uint8_t> open(queries.size());
+    visibility_.visible_batch(queries, open);
+    rays += queries.size();
+    int seen = 0;
+    for (const std::uint8_t v : open) seen += v;
+    return queries.empty() ? 0.0 : seen / static_cast<double>(queries.size());
 }
 
 double Transport::point_to_patch(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
