@@ -7,9 +7,8 @@
 
 #include "exit_codes.h"
 #include "http_client.h"
-#include "result_command.h"
+#include "job_document_command.h"
 #include "solve_command.h"
-#include "status_command.h"
 #include "submit_command.h"
 #include "validate_command.h"
 #include "watch_command.h"
@@ -22,9 +21,12 @@ int main(int argc, char** argv) {
         radiant::cli::add_solve_command(app, exit_code);
         radiant::cli::add_validate_command(app, exit_code);
         radiant::cli::add_submit_command(app, exit_code);
-        radiant::cli::add_status_command(app, exit_code);
+        radiant::cli::add_job_document_command(app, exit_code, "status",
+                                               "Print a radiantd job's state as JSON", "");
         radiant::cli::add_watch_command(app, exit_code);
-        radiant::cli::add_result_command(app, exit_code);
+        radiant::cli::add_job_document_command(app, exit_code, "result",
+                                               "Print a radiantd job's radiant-result/1 document",
+                                               "/result");
         try {
             app.parse(argc, argv);
         } catch (const CLI::ParseError& e) {

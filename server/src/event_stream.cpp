@@ -10,15 +10,9 @@ std::string EventStream::next(const JobRecord& job) {
     const JobProgress& p = job.progress;
     if (p.sequence > last_sent_) {
         last_sent_ = p.sequence;
-        const nlohmann::json data = {{"id", job.id},
-                                     {"status", to_string(job.status)},
-                                     {"stage", p.stage},
-                                     {"fraction", p.fraction},
-                                     {"iterations", p.iterations},
-                                     {"unshot_fraction", p.unshot_fraction},
-                                     {"error_estimate", p.error_estimate},
-                                     {"elapsed_seconds", p.elapsed_seconds},
-                                     {"rays", p.rays}};
+        nlohmann::json data = progress_to_json(p);
+        data["id"] = job.id;
+        data["status"] = to_string(job.status);
         out += "event: progress\nid: " + std::to_string(p.sequence) + "\ndata: " + data.dump() +
                "\n\n";
     }

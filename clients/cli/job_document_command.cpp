@@ -1,8 +1,7 @@
-#include "status_command.h"
+#include "job_document_command.h"
 
 #include <iostream>
 #include <memory>
-#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -11,18 +10,20 @@
 
 namespace radiant::cli {
 
-void add_status_command(CLI::App& app, int& exit_code) {
-    auto* cmd = app.add_subcommand("status", "Print a radiantd job's state as JSON");
+void add_job_document_command(CLI::App& app, int& exit_code, const std::string& name,
+                              const std::string& description, const std::string& suffix) {
+    auto* cmd = app.add_subcommand(name, description);
     auto id = std::make_shared<std::string>();
     auto url = std::make_shared<std::string>();
     cmd->add_option("id", *id, "job id")->required();
     add_server_option(cmd, url);
-    cmd->callback([id, url, &exit_code] {
-        const HttpReply reply = http_request(server_of(*url), "GET", "/v1/jobs/" + *id);
+    cmd->callback([id, url, suffix, &exit_code] {
+        const HttpReply reply = http_request(server_of(*url), "GET", "/v1/jobs/" + *id + suffix);
         if (reply.status != 200) {
             exit_code = report_error(*id, reply);
             return;
         }
+        // Pretty, like `radiant solve`: the store keeps documents compact.
         std::cout << nlohmann::json::parse(reply.body).dump(2) << '\n';
         exit_code = kExitOk;
     });
