@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,8 @@ struct SolveOptions {
     int threads = 0;                    ///< 0: all cores
     std::uint64_t seed = 1;             ///< sampling seed; results do not depend on `threads`
     bool want_mesh = false;             ///< fill Result::mesh
+    /// Least time between two snapshots handed to SolveObserver::on_snapshot while solving.
+    double snapshot_interval_seconds = 0.5;
 };
 
 /// Options from a scene's own `settings`; command-line flags override fields afterwards.
@@ -45,6 +48,18 @@ struct Progress {
     double error_estimate = 0;
     double elapsed_seconds = 0;
     std::uint64_t rays = 0;
+    std::size_t elements = 0;  ///< current number of patches or hierarchy leaves
+    std::size_t links = 0;
+};
+
+/// A progressive result published while the solve runs: the patch mesh with the current
+/// radiosity (triangle and vertex values), so a viewer can redraw as the solution converges.
+struct Snapshot {
+    std::uint64_t version = 0;       ///< 1, 2, … in publication order
+    std::uint64_t mesh_version = 0;  ///< changes only when the geometry (triangles) changes
+    std::shared_ptr<const SolvedMesh> mesh;  ///< world coordinates; radiosity of this snapshot
+    Progress progress;
+    bool final = false;  ///< the last snapshot: its values are the result's
 };
 
 /// Receives progress from the solving thread (or a worker thread). Implementations must be
@@ -53,6 +68,8 @@ class SolveObserver {
 public:
     virtual ~SolveObserver() = default;
     virtual void on_progress(const Progress& progress) = 0;
+    /// At most once per SolveOptions::snapshot_interval_seconds, and once at the end.
+    virtual void on_snapshot(const Snapshot& /*snapshot*/) {}
 };
 
 /// Solves `scene`. Never throws for bad input: a scene that fails `check_scene` gives a result

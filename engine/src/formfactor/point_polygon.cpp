@@ -80,4 +80,10 @@ std::vector<Vec3> clip_to_halfspace(std::span<const Vec3> polygon, const Vec3& o
     return out;
 }
 
+double front_point_to_polygon_factor(const Vec3& x, const Vec3& n, std::span<const Vec3> polygon,
+                                     const Vec3& polygon_normal) {
+    if (dot(x - polygon[0], polygon_normal) <= 0) return 0;
+    return point_to_polygon_factor(x, n, polygon);
+}
+
 }  // namespace radiant

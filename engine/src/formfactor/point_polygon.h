@@ -14,6 +14,11 @@ namespace radiant {
 /// to rounding (Lambert 1760 / Nusselt; atan2 form for accuracy at small angles).
 double point_to_polygon_factor(const Vec3& x, const Vec3& n, std::span<const Vec3> polygon);
 
+/// point_to_polygon_factor for a one-sided emitter with unit normal `polygon_normal`: 0 for a
+/// point behind its plane, even when part of the polygon is in front of the point.
+double front_point_to_polygon_factor(const Vec3& x, const Vec3& n, std::span<const Vec3> polygon,
+                                     const Vec3& polygon_normal);
+
 /// Solid angle (sr) subtended by the planar polygon at `x` (Van Oosterom & Strackee 1983 over a
 /// triangle fan). Always ≥ 0.
 double polygon_solid_angle(const Vec3& x, std::span<const Vec3> polygon);

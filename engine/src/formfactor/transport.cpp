@@ -2,37 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
+#include "formfactor/luminaire_light.h"
 #include "formfactor/point_polygon.h"
+#include "formfactor/shadow_rays.h"
 #include "formfactor/receiver_rule.h"
 #include "geometry/random.h"
 
 namespace radiant {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
-// Luminous intensity (cd per lm of flux) toward unit direction u.
-double intensity_per_lm(const PreparedLuminaire& l, const Vec3& u) {
-    if (l.distribution == Distribution::isotropic) return 1.0 / (4 * kPi);
-    return std::max(0.0, dot(l.aim, u)) / kPi;
-}
-
-// Luminous flux fraction of the luminaire that falls on a polygon, unoccluded (exact):
-// isotropic: Ω/4π; lambertian about `aim`: the projected solid angle / π = F(aim → polygon).
-double flux_fraction_on(const PreparedLuminaire& l, std::span<const Vec3> polygon) {
-    if (l.distribution == Distribution::isotropic) {
-        return polygon_solid_angle(l.position, polygon) / (4 * kPi);
-    }
-    return point_to_polygon_factor(l.position, l.aim, polygon);
-}
-
-// Sources emit from their front only: a point behind the source's plane gets nothing, even when
-// the rest of its patch (straddling the plane's line) is in front.
 double front_factor(const Vec3& x, const Vec3& n, const PatchGeometry& src) {
-    if (dot(x - src.vertices[0], src.normal) <= 0) return 0;
-    return point_to_polygon_factor(x, n, src.vertices);
+    return front_point_to_polygon_factor(x, n, src.vertices, src.normal);
 }
 
 }  // namespace
@@ -72,29 +53,8 @@ double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, 
                                    std::uint64_t key, std::uint64_t& rays) const {
     const PatchGeometry& src = patches_.patch(j);
     SampleStream rng(options_.seed, key, j);
-    std::vector<double> u(2 * static_cast<std::size_t>(m));
-    for (double& v : u) v = rng.next();
-    const std::vector<Vec3> targets = stratified_points(src.vertices, m, u);
-    const double eps = visibility_.epsilon();
-    const Vec3 from = x + n * eps;
-    std::vector<SegmentQuery> queries;
-    queries.reserve(targets.size());
-    for (const Vec3& y : targets) {
-        // Inset the target by 2ε: a blocker standing on the source's edge (a partition on the
-        // floor) must cross the ray farther from its end than the end margin that spares the
-        // source itself, or light leaks under the wall.
-        const Vec3 to_centre = src.centroid - y;
-        const double d = length(to_centre);
-        const Vec3 inset = d > 0 ? y + to_centre * (std::min(2 * eps, 0.5 * d) / d) : y;
-        queries.push_back({from, inset + src.normal * eps});
-    }
-    // One shaft of rays: the backend traces it as a coherent packet.
-    std::vector<std::uint8_t> open(queries.size());
-    visibility_.visible_batch(queries, open);
-    rays += queries.size();
-    int seen = 0;
-    for (const std::uint8_t v : open) seen += v;
-    return queries.empty() ? 0.0 : seen / static_cast<double>(queries.size());
+    return radiant::visible_fraction(visibility_, x, n, src.vertices, src.centroid, src.normal, m,
+                                     rng, rays);
 }
 
 double Transport::point_to_patch(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
@@ -193,22 +153,7 @@ Rgb Transport::luminaire_irradiance_on_patch(std::size_t i, std::uint64_t& rays)
 
 Rgb Transport::luminaire_irradiance_at(const Vec3& x, const Vec3& n, std::uint64_t /*key*/,
                                        std::uint64_t& rays) const {
-    Rgb e{0, 0, 0};
-    const double eps = visibility_.epsilon();
-    for (const PreparedLuminaire& l : scene_.luminaires) {
-        const Vec3 d = l.position - x;
-        const double d2 = length_squared(d);
-        if (!(d2 > 0)) continue;
-        const double r = std::sqrt(d2);
-        const double cos_r = dot(n, d) / r;
-        if (cos_r <= 0) continue;
-        const double i_per_lm = intensity_per_lm(l, -d / r);
-        if (i_per_lm <= 0) continue;
-        ++rays;
-        if (!visibility_.visible(x + n * eps, l.position)) continue;
-        for (int c = 0; c < 3; ++c) e[c] += l.flux_lm[c] * i_per_lm * cos_r / d2;
-    }
-    return e;
+    return radiant::luminaire_irradiance_at(scene_, visibility_, x, n, rays);
 }
 
 }  // namespace radiant

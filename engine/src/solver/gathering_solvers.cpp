@@ -28,6 +28,7 @@ SolverOutcome iterate(const LinearSystem& s, const SolverControl& control, Sweep
     }
     constexpr std::size_t kMaxSweeps = 1000000;
     auto last_report = std::chrono::steady_clock::now();
+    auto last_snapshot = last_report;
     while (out.iterations < kMaxSweeps) {
         double worst = 0;
         for (int c = 0; c < s.channels; ++c) {
@@ -45,6 +46,7 @@ SolverOutcome iterate(const LinearSystem& s, const SolverControl& control, Sweep
             control.progress(out.iterations, worst, 0);
             last_report = now;
         }
+        if (control.snapshot_due(last_snapshot)) control.snapshot(out.radiosity);
         if (worst <= control.tolerance) {
             out.converged = true;
             break;

@@ -64,6 +64,7 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
     // The O(n) estimate is cheap next to a shot's O(n) update only every few shots.
     const std::size_t check_every = std::max<std::size_t>(1, n / 16);
     auto last_report = std::chrono::steady_clock::now();
+    auto last_snapshot = last_report;
     const std::size_t max_shots = 1000 * std::max<std::size_t>(n, 1000);
     while (true) {
         if (out.iterations % check_every == 0) {
@@ -72,6 +73,15 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
             if (control.progress && now - last_report > std::chrono::milliseconds(100)) {
                 control.progress(out.iterations, out.error_estimate, out.unshot_fraction);
                 last_report = now;
+            }
+            if (control.snapshot_due(last_snapshot)) {
+                std::array<std::vector<double>, 3> b;
+                for (int c = 0; c < channels; ++c) {
+                    const auto ci = static_cast<std::size_t>(c);
+                    b[ci].resize(n);
+                    for (std::size_t i = 0; i < n; ++i) b[ci][i] = shot[ci][i] + unshot[ci][i];
+                }
+                control.snapshot(b);
             }
             if (out.error_estimate <= control.tolerance) {
                 out.converged = true;

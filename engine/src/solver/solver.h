@@ -23,6 +23,17 @@ struct SolverControl {
     const CancellationToken* cancel = nullptr;
     /// Called now and then with (iterations, error estimate, unshot fraction).
     std::function<void(std::size_t, double, double)> progress;
+    /// Called with the current radiosity (per channel) at most every `snapshot_interval`.
+    std::function<void(const std::array<std::vector<double>, 3>&)> snapshot;
+    std::chrono::duration<double> snapshot_interval{0.5};
+
+    /// True (and `last` reset to now) when a snapshot is wanted and the interval has passed.
+    bool snapshot_due(std::chrono::steady_clock::time_point& last) const {
+        const auto now = std::chrono::steady_clock::now();
+        if (!snapshot || now - last < snapshot_interval) return false;
+        last = now;
+        return true;
+    }
 
     bool should_stop() const {
         return (cancel && cancel->cancelled()) ||

@@ -1,0 +1,216 @@
+#include "hierarchy/element_tree.h"
+
+#include <algorithm>
+#include <functional>
+
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include "formfactor/luminaire_light.h"
+#include "formfactor/quadrature.h"
+#include "formfactor/receiver_rule.h"
+#include "geometry/random.h"
+
+namespace radiant {
+namespace {
+
+// Receiver points of a cluster: enough to see whether light varies over it.
+constexpr int kClusterSamples = 8;
+// Deeper quadtrees than this only chase rounding.
+constexpr int kMaxDepth = 14;
+
+double photometric(const Rgb& c, int channels) { return channels == 1 ? c[0] : luminance(c); }
+
+}  // namespace
+
+ElementTree::ElementTree(const PreparedScene& scene, const PatchMesh& patches,
+                         const Visibility& visibility, double min_edge_m, std::uint64_t seed)
+    : scene_(scene), patches_(patches), visibility_(visibility), min_edge_m_(min_edge_m),
+      seed_(seed) {
+    elements_.reserve(4 * patches.size() + 16);
+    patch_element_.assign(patches.size(), -1);
+    std::vector<int> roots;
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+        const PatchGeometry& p = patches.patch(i);
+        if (p.hidden) continue;
+        patch_element_[i] = add_surface(p.vertices, p.normal, static_cast<int>(i), -1, 0);
+        roots.push_back(patch_element_[i]);
+    }
+    if (roots.empty()) return;
+    top_ = build_clusters(roots, 0, roots.size());
+}
+
+int ElementTree::add_surface(std::vector<Vec3> polygon, const Vec3& normal, int patch, int parent,
+                             int depth) {
+    const PatchGeometry& p = patches_.patch(static_cast<std::size_t>(patch));
+    const PreparedMaterial& m = scene_.materials[static_cast<std::size_t>(p.material)];
+    Element e;
+    e.polygon = std::move(polygon);
+    e.normal = normal;
+    e.area_m2 = polygon_area(e.polygon);
+    e.patch = patch;
+    e.parent = parent;
+    e.depth = depth;
+    e.reflectance = m.reflectance;
+    if (!p.back_side) e.exitance = m.exitance_lm_m2;
+    e.emits = !p.back_side && m.emits();
+    for (const QuadraturePoint& q : polygon_quadrature(e.polygon, 2)) {
+        e.samples.push_back({q.position, normal, q.weight});
+    }
+    fill_bounds(e);
+    elements_.push_back(std::move(e));
+    return static_cast<int>(elements_.size() - 1);
+}
+
+void ElementTree::fill_bounds(Element& e) const {
+    e.lo = e.hi = e.polygon.empty() ? Vec3{} : e.polygon[0];
+    for (const Vec3& v : e.polygon) {
+        for (int a = 0; a < 3; ++a) {
+            e.lo[a] = std::min(e.lo[a], v[a]);
+            e.hi[a] = std::max(e.hi[a], v[a]);
+        }
+    }
+    e.diameter_m = length(e.hi - e.lo);
+}
+
+// Median split along the longest axis of the centroids' bounds: O(k log k), balanced.
+int ElementTree::build_clusters(std::vector<int>& items, std::size_t begin, std::size_t end) {
+    if (end - begin == 1) return items[begin];
+    Vec3 lo = elements_[static_cast<std::size_t>(items[begin])].lo, hi = lo;
+    for (std::size_t i = begin; i < end; ++i) {
+        const Element& e = elements_[static_cast<std::size_t>(items[i])];
+        const Vec3 c = (e.lo + e.hi) * 0.5;
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], c[a]);
+            hi[a] = std::max(hi[a], c[a]);
+        }
+    }
+    const Vec3 extent = hi - lo;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const std::size_t mid = begin + (end - begin) / 2;
+    std::nth_element(items.begin() + static_cast<std::ptrdiff_t>(begin),
+                     items.begin() + static_cast<std::ptrdiff_t>(mid),
+                     items.begin() + static_cast<std::ptrdiff_t>(end), [&](int a, int b) {
+                         const Element& ea = elements_[static_cast<std::size_t>(a)];
+                         const Element& eb = elements_[static_cast<std::size_t>(b)];
+                         return ea.lo[axis] + ea.hi[axis] < eb.lo[axis] + eb.hi[axis];
+                     });
+    const int left = build_clusters(items, begin, mid);
+    const int right = build_clusters(items, mid, end);
+
+    Element c;
+    c.cluster = true;
+    c.children = {left, right};
+    const std::size_t index = elements_.size();
+    std::vector<int> contents;
+    for (std::size_t i = begin; i < end; ++i) contents.push_back(items[i]);
+    const Element& a = elements_[static_cast<std::size_t>(left)];
+    const Element& b = elements_[static_cast<std::size_t>(right)];
+    for (int k = 0; k < 3; ++k) {
+        c.lo[k] = std::min(a.lo[k], b.lo[k]);
+        c.hi[k] = std::max(a.hi[k], b.hi[k]);
+        c.reflectance[k] = std::max(a.reflectance[k], b.reflectance[k]);
+    }
+    c.diameter_m = length(c.hi - c.lo);
+    c.area_m2 = a.area_m2 + b.area_m2;
+    c.emits = a.emits || b.emits;
+    // Receiver points spread over the contents by area, stratified.
+    std::vector<double> cdf;
+    double total = 0;
+    for (const int r : contents) cdf.push_back(total += elements_[static_cast<std::size_t>(r)].area_m2);
+    SampleStream rng(seed_, 0x636c7573ull, index);
+    for (int s = 0; s < kClusterSamples; ++s) {
+        const double pick = (s + rng.next()) / kClusterSamples * total;
+        const auto at = std::min<std::size_t>(
+            static_cast<std::size_t>(std::upper_bound(cdf.begin(), cdf.end(), pick) - cdf.begin()),
+            contents.size() - 1);
+        const Element& r = elements_[static_cast<std::size_t>(contents[at])];
+        const double u[2] = {rng.next(), rng.next()};
+        const Vec3 x = stratified_points(r.polygon, 1, u).front();
+        c.samples.push_back({x, r.normal, total / kClusterSamples, contents[at]});
+    }
+    elements_.push_back(std::move(c));
+    elements_[static_cast<std::size_t>(left)].parent = static_cast<int>(index);
+    elements_[static_cast<std::size_t>(right)].parent = static_cast<int>(index);
+    return static_cast<int>(index);
+}
+
+bool ElementTree::can_subdivide(int e) const {
+    const Element& x = elements_[static_cast<std::size_t>(e)];
+    return x.cluster ? !x.children.empty()
+                     : (!x.children.empty() || (x.diameter_m > min_edge_m_ && x.depth < kMaxDepth));
+}
+
+void ElementTree::subdivide(int e) {
+    if (!elements_[static_cast<std::size_t>(e)].children.empty()) return;
+    const Element parent = elements_[static_cast<std::size_t>(e)];  // copy: push_back reallocates
+    std::vector<int> children;
+    for (auto& part : split_in_four(parent.polygon)) {
+        const int c = add_surface(std::move(part), parent.normal, parent.patch, e, parent.depth + 1);
+        Element& child = elements_[static_cast<std::size_t>(c)];
+        child.radiosity = parent.radiosity;
+        child.radiosity_max = parent.radiosity_max;
+        children.push_back(c);
+    }
+    elements_[static_cast<std::size_t>(e)].children = std::move(children);
+}
+
+void ElementTree::light_from_luminaires(Element& e, std::uint64_t& rays) const {
+    e.luminaire_irradiance = {0, 0, 0};
+    if (scene_.luminaires.empty() || e.cluster) return;
+    for (const SamplePoint& s : e.samples) {
+        const Rgb h = luminaire_irradiance_at(scene_, visibility_, s.position, s.normal, rays);
+        for (int c = 0; c < 3; ++c) e.luminaire_irradiance[c] += s.weight * h[c] / e.area_m2;
+    }
+}
+
+std::uint64_t ElementTree::light_from(std::size_t first) {
+    tbb::combinable<std::uint64_t> rays([] { return std::uint64_t{0}; });
+    tbb::parallel_for(first, elements_.size(),
+                      [&](std::size_t i) { light_from_luminaires(elements_[i], rays.local()); });
+    return rays.combine(std::plus<>());
+}
+
+void ElementTree::estimate_from(std::size_t first, double ambient_irradiance, int channels) {
+    for (std::size_t i = first; i < elements_.size(); ++i) {
+        Element& e = elements_[i];
+        if (e.cluster) continue;
+        for (int c = 0; c < 3; ++c) {
+            e.radiosity[c] = e.exitance[c] +
+                             e.reflectance[c] * (e.luminaire_irradiance[c] + ambient_irradiance);
+        }
+        e.radiosity_max = photometric(e.radiosity, channels);
+    }
+    if (first == 0) pull_up(channels);
+}
+
+void ElementTree::pull_up(int channels) {
+    if (top_ >= 0) pull(top_, channels);
+}
+
+void ElementTree::pull(int e, int channels) {
+    Element& x = elements_[static_cast<std::size_t>(e)];
+    if (x.children.empty()) {
+        x.radiosity_max = photometric(x.radiosity, channels);
+        return;
+    }
+    Rgb sum{0, 0, 0};
+    double area = 0, most = 0;
+    for (const int c : x.children) {
+        pull(c, channels);
+        const Element& y = elements_[static_cast<std::size_t>(c)];
+        for (int k = 0; k < 3; ++k) sum[k] += y.area_m2 * y.radiosity[k];
+        area += y.area_m2;
+        most = std::max(most, y.radiosity_max);
+    }
+    Element& z = elements_[static_cast<std::size_t>(e)];
+    for (int k = 0; k < 3; ++k) z.radiosity[k] = area > 0 ? sum[k] / area : 0;
+    z.radiosity_max = most;
+}
+
+std::size_t ElementTree::leaf_count() const {
+    return static_cast<std::size_t>(std::count_if(elements_.begin(), elements_.end(),
+                                                  [](const Element& e) { return e.leaf(); }));
+}
+
+}  // namespace radiant

@@ -1,0 +1,139 @@
+#include "hierarchy/hierarchical_gather.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include "formfactor/luminaire_light.h"
+#include "formfactor/point_polygon.h"
+#include "formfactor/quadrature.h"
+#include "formfactor/shadow_rays.h"
+#include "solution/sensors.h"
+
+namespace radiant {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Distance from x to the box [lo, hi] (0 inside).
+double box_distance(const Vec3& x, const Vec3& lo, const Vec3& hi) {
+    double d2 = 0;
+    for (int a = 0; a < 3; ++a) {
+        const double d = std::max({lo[a] - x[a], 0.0, x[a] - hi[a]});
+        d2 += d * d;
+    }
+    return std::sqrt(d2);
+}
+
+bool box_behind(const Vec3& x, const Vec3& n, const Vec3& lo, const Vec3& hi) {
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 c{(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z};
+        if (dot(c - x, n) > 0) return false;
+    }
+    return true;
+}
+
+class PointGather {
+public:
+    PointGather(const ElementTree& tree, const Visibility& visibility, const GatherCriteria& c,
+                int channels)
+        : tree_(tree), visibility_(visibility), criteria_(c), channels_(channels) {}
+
+    Rgb at(const Vec3& x, const Vec3& n, std::uint64_t key, std::uint64_t& rays) const {
+        Rgb h{0, 0, 0};
+        std::vector<int> stack{tree_.top()};
+        while (!stack.empty()) {
+            const int index = stack.back();
+            stack.pop_back();
+            const Element& e = tree_[static_cast<std::size_t>(index)];
+            if (box_behind(x, n, e.lo, e.hi)) continue;
+            if (!e.cluster && dot(x - e.polygon[0], e.normal) <= 0) continue;
+            double factor = 0;
+            if (e.leaf()) {
+                factor = surface_factor(x, n, e, index, key, true, rays);
+            } else {
+                const double d = box_distance(x, e.lo, e.hi);
+                const double bound = d > 0 ? std::min(1.0, e.area_m2 / (kPi * d * d)) : 1.0;
+                if (bound * e.radiosity_max > criteria_.irradiance_epsilon) {
+                    for (const int c : e.children) stack.push_back(c);
+                    continue;
+                }
+                factor = e.cluster ? cluster_factor(x, n, e, rays)
+                                   : surface_factor(x, n, e, index, key, false, rays);
+            }
+            for (int c = 0; c < channels_; ++c) h[c] += factor * e.radiosity[c];
+        }
+        return h;
+    }
+
+private:
+    double surface_factor(const Vec3& x, const Vec3& n, const Element& e, int index,
+                          std::uint64_t key, bool exact_leaf, std::uint64_t& rays) const {
+        const double f = front_point_to_polygon_factor(x, n, e.polygon, e.normal);
+        if (f <= 0) return 0;
+        const int m = exact_leaf && e.emits ? criteria_.emitter_rays_per_point
+                                            : criteria_.rays_per_point;
+        SampleStream rng(criteria_.seed, key, static_cast<std::uint64_t>(index));
+        return f * visible_fraction(visibility_, x, n, e.polygon, polygon_centroid(e.polygon),
+                                    e.normal, m, rng, rays);
+    }
+
+    double cluster_factor(const Vec3& x, const Vec3& n, const Element& e, std::uint64_t& rays) const {
+        double g = 0;
+        const double eps = visibility_.epsilon();
+        for (const SamplePoint& y : e.samples) {
+            const Vec3 d = y.position - x;
+            const double r2 = length_squared(d);
+            if (!(r2 > 0)) continue;
+            const double r = std::sqrt(r2);
+            const double cos_x = dot(n, d) / r, cos_y = -dot(y.normal, d) / r;
+            if (cos_x <= 0 || cos_y <= 0) continue;
+            ++rays;
+            if (!visibility_.visible(x + n * eps, y.position + y.normal * eps)) continue;
+            g += y.weight * cos_x * cos_y / (kPi * r2 + y.weight);
+        }
+        return g;
+    }
+
+    const ElementTree& tree_;
+    const Visibility& visibility_;
+    const GatherCriteria& criteria_;
+    int channels_;
+};
+
+}  // namespace
+
+std::vector<SensorResult> gather_sensors_from_tree(const PreparedScene& scene,
+                                                   const ElementTree& tree,
+                                                   const Visibility& visibility,
+                                                   const GatherCriteria& criteria, int channels,
+                                                   std::uint64_t& rays) {
+    const PointGather gather(tree, visibility, criteria, channels);
+    std::vector<SensorResult> out;
+    tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
+    for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
+        const PreparedSensorSet& set = scene.sensors[s];
+        SensorResult r;
+        r.name = set.name;
+        r.illuminance.resize(set.points.size());
+        tbb::parallel_for(std::size_t{0}, set.points.size(), [&](std::size_t i) {
+            std::uint64_t& local = ray_count.local();
+            const Vec3& x = set.points[i];
+            Rgb h = luminaire_irradiance_at(scene, visibility, x, set.normal, local);
+            if (tree.top() >= 0) {
+                const Rgb g = gather.at(x, set.normal, (s << 40) ^ i, local);
+                for (int c = 0; c < 3; ++c) h[c] += g[c];
+            }
+            r.illuminance[i] = channels == 1 ? h[0] : luminance(h);
+        });
+        fill_sensor_statistics(r);
+        out.push_back(std::move(r));
+    }
+    rays += ray_count.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
+    return out;
+}
+
+}  // namespace radiant

@@ -1,0 +1,15 @@
+// The display mesh of a solved hierarchy: its leaves as triangles, with vertex radiosity
+// averaged (by area) over the leaves of one surface side that share the vertex, never across
+// surfaces or creases.
+#pragma once
+
+#include "hierarchy/element_tree.h"
+#include "meshing/patch_mesh.h"
+#include "radiant/result.h"
+
+namespace radiant {
+
+SolvedMesh leaf_mesh(const ElementTree& tree, const PatchMesh& patches, int channels,
+                     const Vec3& world_origin);
+
+}  // namespace radiant

@@ -1,0 +1,282 @@
+#include "hierarchy/link_refinement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include "formfactor/point_polygon.h"
+#include "formfactor/shadow_rays.h"
+#include "formfactor/quadrature.h"
+#include "geometry/random.h"
+
+namespace radiant {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Pair {
+    int receiver;
+    int source;
+};
+
+enum class Decision { drop, link, split_receiver, split_source };
+
+// Where a link's light comes from: the source itself, or for a cluster, the root patches its
+// sample points lie on — so that a cluster never passes on light from a part of it that the
+// receiver cannot see (a lit room behind a wall).
+struct SourcePart {
+    int element;
+    double factor;
+};
+
+struct Verdict {
+    Decision decision = Decision::drop;
+    std::vector<SourcePart> parts;
+};
+
+// Kernel values at the receiver's points: unoccluded, or with sampled visibility.
+struct KernelSamples {
+    double factor = 0;  ///< weighted mean: the link's K
+    double spread = 0;  ///< max − min over the points
+    bool partial = false;  ///< some but not all shadow rays of some point were blocked
+    std::vector<double> sample_factor;  ///< cluster sources: K carried by each sample point
+};
+
+class Oracle {
+public:
+    Oracle(const ElementTree& tree, const Visibility& visibility, const RefinementCriteria& c)
+        : tree_(tree), visibility_(visibility), criteria_(c), eps_(visibility.epsilon()) {}
+
+    Verdict judge(const Pair& p, std::uint64_t& rays) const {
+        const Element& r = tree_[static_cast<std::size_t>(p.receiver)];
+        const Element& s = tree_[static_cast<std::size_t>(p.source)];
+        if (!may_exchange(r, s)) return {};
+        const double power_per_factor = r.area_m2 * s.radiosity_max;
+        const double limit = criteria_.power_epsilon_lm;
+        const bool split_r = tree_.can_subdivide(p.receiver);
+        const bool split_s = tree_.can_subdivide(p.source);
+        const Decision split = choose_split(r, s, split_r, split_s);
+
+        // Decide from the unoccluded kernel first: most splits need no shadow ray at all.
+        const KernelSamples open = kernel(r, s, p, false, rays);
+        if (open.factor <= 0) return {};
+        const bool clusters = r.cluster || s.cluster;
+        const double open_error = power_per_factor * (clusters ? open.factor : open.spread);
+        if (open_error > limit && split != Decision::link) return {split, {}};
+
+        const KernelSamples seen = kernel(r, s, p, true, rays);
+        if (seen.factor <= 0) return {};
+        double error = power_per_factor * (clusters ? seen.factor : seen.spread);
+        if (seen.partial) error = std::max(error, power_per_factor * seen.factor);
+        if (error > limit && split != Decision::link) return {split, {}};
+        Verdict v{Decision::link, {}};
+        if (!s.cluster) {
+            v.parts.push_back({p.source, seen.factor});
+        } else {
+            for (std::size_t m = 0; m < s.samples.size(); ++m) {
+                if (seen.sample_factor[m] > 0) v.parts.push_back({s.samples[m].root, seen.sample_factor[m]});
+            }
+        }
+        return v;
+    }
+
+private:
+    // Light passes only between elements that lie (partly) in front of each other.
+    bool may_exchange(const Element& r, const Element& s) const {
+        if (!r.cluster && !s.cluster) {
+            const double eps = 1e-9 * (r.diameter_m + s.diameter_m);
+            auto in_front = [eps](const Element& a, const Element& b) {
+                return std::any_of(b.polygon.begin(), b.polygon.end(), [&](const Vec3& v) {
+                    return dot(v - a.polygon[0], a.normal) > eps;
+                });
+            };
+            return in_front(r, s) && in_front(s, r);
+        }
+        const Element* surface = r.cluster ? (s.cluster ? nullptr : &s) : &r;
+        const Element* other = surface == &r ? &s : &r;
+        if (!surface) return true;
+        // Some corner of the other's box must lie in front of the surface.
+        for (int k = 0; k < 8; ++k) {
+            const Vec3 c{(k & 1) ? other->hi.x : other->lo.x, (k & 2) ? other->hi.y : other->lo.y,
+                         (k & 4) ? other->hi.z : other->lo.z};
+            if (dot(c - surface->polygon[0], surface->normal) > 0) return true;
+        }
+        return false;
+    }
+
+    // HSA91: split the element that looks bigger from the other; area is a fair proxy. Clusters
+    // only send: a cluster receiving as a whole would hand light to parts of it that are hidden.
+    static Decision choose_split(const Element& r, const Element& s, bool split_r, bool split_s) {
+        if (r.cluster) return Decision::split_receiver;
+        if (split_r && split_s) {
+            if (r.cluster != s.cluster) return r.cluster ? Decision::split_receiver : Decision::split_source;
+            return r.diameter_m >= s.diameter_m ? Decision::split_receiver : Decision::split_source;
+        }
+        if (split_r) return Decision::split_receiver;
+        if (split_s) return Decision::split_source;
+        return Decision::link;
+    }
+
+    KernelSamples kernel(const Element& r, const Element& s, const Pair& p, bool visibility,
+                         std::uint64_t& rays) const {
+        KernelSamples out;
+        out.sample_factor.assign(s.cluster ? s.samples.size() : 0, 0.0);
+        double lo = 1e300, hi = 0, weighted = 0, weights = 0;
+        for (std::size_t k = 0; k < r.samples.size(); ++k) {
+            const SamplePoint& x = r.samples[k];
+            const std::uint64_t key = (static_cast<std::uint64_t>(p.receiver) << 32) ^
+                                      static_cast<std::uint64_t>(p.source) ^ (k << 58);
+            const double g = s.cluster ? from_cluster(x, s, visibility, out, rays)
+                                       : from_surface(x, s, key, visibility, out.partial, rays);
+            lo = std::min(lo, g);
+            hi = std::max(hi, g);
+            weighted += x.weight * g;
+            weights += x.weight;
+        }
+        out.factor = weights > 0 ? weighted / weights : 0;
+        out.spread = hi - lo;
+        for (double& f : out.sample_factor) f = weights > 0 ? f / weights : 0;
+        return out;
+    }
+
+    // Lambert's exact factor to the source polygon, times the fraction of stratified shadow
+    // rays that reach it (targets inset by 2ε so that a wall standing on the source blocks).
+    double from_surface(const SamplePoint& x, const Element& s, std::uint64_t key, bool visibility,
+                        bool& partial, std::uint64_t& rays) const {
+        const double f = front_point_to_polygon_factor(x.position, x.normal, s.polygon, s.normal);
+        if (f <= 0 || !visibility) return std::max(f, 0.0);
+        const int m = criteria_.rays_per_point;
+        SampleStream rng(criteria_.seed, key, 0x73757266ull);
+        const double v = visible_fraction(visibility_, x.position, x.normal, s.polygon,
+                                          polygon_centroid(s.polygon), s.normal, m, rng, rays);
+        partial = partial || (v > 0 && v < 1);
+        return f * v;
+    }
+
+    // A cluster as the sum of its sample points, each carrying a share of its area: the
+    // classic point-to-disk kernel A cosθ cosθ' / (πr² + A), bounded as r → 0.
+    double from_cluster(const SamplePoint& x, const Element& s, bool visibility,
+                        KernelSamples& out, std::uint64_t& rays) const {
+        double g = 0;
+        int seen = 0, tried = 0;
+        for (std::size_t m = 0; m < s.samples.size(); ++m) {
+            const SamplePoint& y = s.samples[m];
+            const Vec3 d = y.position - x.position;
+            const double r2 = length_squared(d);
+            if (!(r2 > 0)) continue;
+            const double r = std::sqrt(r2);
+            const double cos_x = dot(x.normal, d) / r, cos_y = -dot(y.normal, d) / r;
+            if (cos_x <= 0 || cos_y <= 0) continue;
+            const double k = y.weight * cos_x * cos_y / (kPi * r2 + y.weight);
+            if (visibility) {
+                ++tried;
+                ++rays;
+                if (!visibility_.visible(x.position + x.normal * eps_, y.position + y.normal * eps_)) {
+                    continue;
+                }
+                ++seen;
+            }
+            g += k;
+            out.sample_factor[m] += x.weight * k;
+        }
+        out.partial = out.partial || (seen > 0 && seen < tried);
+        return g;
+    }
+
+    const ElementTree& tree_;
+    const Visibility& visibility_;
+    const RefinementCriteria& criteria_;
+    double eps_;
+};
+
+}  // namespace
+
+RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
+                               const RefinementCriteria& criteria) {
+    RefinementOutcome out;
+    if (tree.top() < 0) return out;
+    const Oracle oracle(tree, visibility, criteria);
+    std::vector<Pair> pending{{tree.top(), tree.top()}};
+    while (!pending.empty()) {
+        if (criteria.should_stop && criteria.should_stop()) {
+            out.stopped = true;
+            break;
+        }
+        // An element's link to itself: a cluster's parts light each other; a plane never does.
+        std::vector<Pair> pairs;
+        for (const Pair& p : pending) {
+            if (p.receiver != p.source) {
+                pairs.push_back(p);
+                continue;
+            }
+            const Element& e = tree[static_cast<std::size_t>(p.receiver)];
+            if (!e.cluster) continue;
+            for (const int a : e.children) {
+                for (const int b : e.children) pairs.push_back({a, b});
+            }
+        }
+        std::vector<Verdict> verdicts(pairs.size());
+        tbb::combinable<std::uint64_t> rays([] { return std::uint64_t{0}; });
+        tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
+            if (pairs[i].receiver == pairs[i].source) return;  // expanded next round
+            verdicts[i] = oracle.judge(pairs[i], rays.local());
+        });
+        out.rays += rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
+
+        pending.clear();
+        const std::size_t first_new = tree.size();
+        for (std::size_t i = 0; i < pairs.size(); ++i) {
+            const Pair& p = pairs[i];
+            if (p.receiver == p.source) {
+                pending.push_back(p);
+                continue;
+            }
+            const Verdict& v = verdicts[i];
+            switch (v.decision) {
+                case Decision::drop: break;
+                case Decision::link:
+                    for (const SourcePart& part : v.parts) {
+                        out.links.push_back(
+                            {p.receiver, part.element, static_cast<float>(part.factor)});
+                    }
+                    break;
+                case Decision::split_receiver:
+                    tree.subdivide(p.receiver);
+                    for (const int c : tree[static_cast<std::size_t>(p.receiver)].children) {
+                        pending.push_back({c, p.source});
+                    }
+                    break;
+                case Decision::split_source:
+                    tree.subdivide(p.source);
+                    for (const int c : tree[static_cast<std::size_t>(p.source)].children) {
+                        pending.push_back({p.receiver, c});
+                    }
+                    break;
+            }
+        }
+        if (tree.size() > first_new) {
+            out.rays += tree.light_from(first_new);
+            tree.estimate_from(first_new, criteria.ambient_irradiance, criteria.channels);
+        }
+    }
+    std::sort(out.links.begin(), out.links.end(), [](const Link& a, const Link& b) {
+        return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
+    });
+    // Samples of one cluster on the same patch make one link.
+    std::vector<Link> merged;
+    merged.reserve(out.links.size());
+    for (const Link& l : out.links) {
+        if (!merged.empty() && merged.back().receiver == l.receiver && merged.back().source == l.source) {
+            merged.back().factor += l.factor;
+        } else {
+            merged.push_back(l);
+        }
+    }
+    out.links = std::move(merged);
+    return out;
+}
+
+}  // namespace radiant

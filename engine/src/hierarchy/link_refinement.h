@@ -1,0 +1,46 @@
+// Linking the element hierarchy (Hanrahan, Salzman & Aupperle 1991, with clusters after Smits,
+// Arvo & Greenberg 1994): starting from the top cluster's link to itself, a pair of elements is
+// linked when the light it carries is known well enough, otherwise the larger one is split and
+// its children are tried. The oracle works in power: the spread of the kernel over the
+// receiver's points (and partial visibility) times the source's radiosity times the receiver's
+// area, against a fraction of the scene's emitted power.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "hierarchy/element_tree.h"
+#include "visibility/visibility.h"
+
+namespace radiant {
+
+/// Irradiance on `receiver` = factor × radiosity of `source` (area averages over both).
+struct Link {
+    int receiver;
+    int source;
+    float factor;
+};
+
+struct RefinementCriteria {
+    double power_epsilon_lm = 0;  ///< a link may carry at most this much uncertain power
+    int rays_per_point = 4;       ///< shadow rays per receiver point toward a surface source
+    std::uint64_t seed = 1;
+    double ambient_irradiance = 0;  ///< guess of the reflected light, for new elements' estimates
+    int channels = 1;
+    std::function<bool()> should_stop;  ///< polled between rounds
+};
+
+struct RefinementOutcome {
+    std::vector<Link> links;  ///< sorted by receiver, then source
+    std::uint64_t rays = 0;
+    bool stopped = false;
+};
+
+/// Links every pair of elements that exchange light. Splits elements of `tree` as it goes
+/// (and lights the new ones); uses `radiosity_max` of the elements as the source estimate.
+/// Parallel over candidate pairs; deterministic for any thread count.
+RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
+                               const RefinementCriteria& criteria);
+
+}  // namespace radiant

@@ -1,0 +1,133 @@
+// The hierarchical path of the pipeline: root patches, element tree, links, sweeps, gather.
+#include <algorithm>
+#include <cmath>
+
+#include "formfactor/enclosure.h"
+#include "hierarchy/element_tree.h"
+#include "hierarchy/hierarchical_gather.h"
+#include "hierarchy/hierarchical_solver.h"
+#include "hierarchy/leaf_mesh.h"
+#include "hierarchy/link_refinement.h"
+#include "meshing/patch_mesh.h"
+#include "solution/surface_summary.h"
+#include "solver/pipeline.h"
+
+namespace radiant {
+namespace {
+
+// Root patches are this many times the dense path's patch edge; links refine below them.
+constexpr double kRootEdgeFactor = 4;
+// Elements stop splitting at this fraction of the dense path's patch edge.
+constexpr double kMinEdgeFactor = 0.25;
+// A link may leave this fraction of tolerance × emitted power uncertain (RenderPark's default
+// relative threshold is 1e-5 of the power at a 1 % tolerance).
+constexpr double kLinkPowerFraction = 1e-3;
+// A node may add this fraction of tolerance × the mean irradiance to a sensor unopened.
+constexpr double kGatherIrradianceFraction = 0.02;
+// Root patches beyond this would not fit the element budget.
+constexpr std::size_t kMaxRootPatches = 2'000'000;
+
+}  // namespace
+
+Result Pipeline::run_hierarchical(const PreparedSolve& input) {
+    Result result;
+    result.scene = scene_.name;
+    const PreparedScene& scene = input.scene;
+    const Visibility& visibility = *input.visibility;
+    const int channels = scene.channels;
+    const double patch_edge = target_patch_edge(input.mean_free_path_m, options_.tolerance);
+
+    const PatchMesh roots(scene, {kRootEdgeFactor * patch_edge, kMaxRootPatches});
+    const std::vector<char> enclosed =
+        enclosed_patches(scene, roots, visibility, input.triangle_piece, options_.seed);
+    ElementTree tree(scene, roots, visibility, kMinEdgeFactor * patch_edge, options_.seed);
+    rays_ += tree.light_from(0);
+
+    // Scale of the light: emitted power, and the reflected irradiance it would make in a closed
+    // room of this area and mean reflectance — a first guess of every element's radiosity.
+    double emitted = 0, rho_area = 0, area = 0;
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+        const PatchGeometry& p = roots.patch(i);
+        const PreparedMaterial& m = scene.materials[static_cast<std::size_t>(p.material)];
+        area += p.area_m2;
+        rho_area += p.area_m2 * photometric(m.reflectance, channels);
+        if (!p.back_side && !p.hidden) emitted += p.area_m2 * photometric(m.exitance_lm_m2, channels);
+    }
+    for (const PreparedLuminaire& l : scene.luminaires) emitted += photometric(l.flux_lm, channels);
+    const double rho_mean = area > 0 ? std::min(rho_area / area, 0.999) : 0;
+    const double ambient = area > 0 ? emitted * rho_mean / (area * (1 - rho_mean)) : 0;
+    tree.estimate_from(0, ambient, channels);
+
+    report("form factors", 0.05);
+    RefinementCriteria criteria;
+    criteria.power_epsilon_lm = kLinkPowerFraction * options_.tolerance * emitted;
+    criteria.seed = options_.seed;
+    criteria.ambient_irradiance = ambient;
+    criteria.channels = channels;
+    criteria.should_stop = [this] { return should_stop(); };
+    RefinementOutcome linked = refine_links(tree, visibility, criteria);
+    rays_ += linked.rays;
+    elements_ = tree.leaf_count();
+    links_ = linked.links.size();
+
+    HierarchicalSystem system(tree, linked.links, enclosed, channels);
+    report("solving", 0.6);
+    SolverControl control;
+    control.tolerance = options_.tolerance / 4;  // leave most of the budget to the links
+    control.deadline = deadline_;
+    control.cancel = cancel_;
+    control.progress = [&](std::size_t it, double err, double unshot) {
+        report("solving", 0.6 + 0.3 * std::clamp(std::log(std::max(err, 1e-300)) /
+                                                     std::log(control.tolerance), 0.0, 1.0),
+               it, err, unshot);
+    };
+    control.snapshot_interval = std::chrono::duration<double>(options_.snapshot_interval_seconds);
+    std::function<void()> publish;
+    if (observer_) {
+        publish = [&] {
+            publish_snapshot(std::make_shared<const SolvedMesh>(
+                                 leaf_mesh(tree, roots, channels, scene.world_origin)),
+                             1, false);
+        };
+    }
+    const HierarchicalOutcome outcome = system.solve(control, publish);
+    const bool stopped = linked.stopped || !outcome.converged;
+
+    std::vector<SolvedElement> solved;
+    for (std::size_t e = 0; e < tree.size(); ++e) {
+        const Element& x = tree[e];
+        if (x.cluster || !x.leaf()) continue;
+        const PatchGeometry& p = roots.patch(static_cast<std::size_t>(x.patch));
+        solved.push_back({p.surface, p.material, x.area_m2, p.back_side, false,
+                          system.leaf_irradiance(static_cast<int>(e)), x.radiosity});
+    }
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+        const PatchGeometry& p = roots.patch(i);
+        if (p.hidden) solved.push_back({p.surface, p.material, p.area_m2, p.back_side, true, {}, {}});
+    }
+    const double error_estimate = outcome.error_estimate;
+
+    report("sensors", 0.9, outcome.iterations, error_estimate, 0);
+    double mean_irradiance = 0;
+    for (const SolvedElement& s : solved) mean_irradiance += s.area_m2 * photometric(s.irradiance, channels);
+    mean_irradiance = area > 0 ? mean_irradiance / area : 0;
+    GatherCriteria gather;
+    gather.irradiance_epsilon = kGatherIrradianceFraction * options_.tolerance * mean_irradiance;
+    gather.seed = options_.seed;
+    result.sensors = gather_sensors_from_tree(scene, tree, visibility, gather, channels, rays_);
+
+    SurfaceSummary summary = summarise_surfaces(scene, solved, channels);
+    result.surfaces = std::move(summary.surfaces);
+    result.stats.emitted_flux_lm = summary.emitted_flux_lm;
+    result.stats.absorbed_flux_lm = summary.absorbed_flux_lm;
+    const auto mesh =
+        std::make_shared<const SolvedMesh>(leaf_mesh(tree, roots, channels, scene.world_origin));
+    if (options_.want_mesh) result.mesh = *mesh;
+    finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
+                 channels, stopped);
+    last_progress_.error_estimate = error_estimate;
+    publish_snapshot(mesh, 1, true);
+    return result;
+}
+
+}  // namespace radiant

@@ -1,0 +1,273 @@
+#include "solver/pipeline.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include <OpenMesh/Core/System/omstream.hh>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "formfactor/enclosure.h"
+#include "formfactor/transport.h"
+#include "meshing/patch_mesh.h"
+#include "solution/gouraud.h"
+#include "solution/sensors.h"
+#include "solution/surface_summary.h"
+#include "solver/solver.h"
+
+namespace radiant {
+namespace {
+
+// Above this many patches the dense solvers' n² memory and time stop paying; the patch size
+// grows instead (the hierarchical solver is the answer for larger models).
+constexpr std::size_t kMaxDensePatches = 3000;
+// A model with more polygons than this cannot be meshed within the dense solvers' budget
+// (one patch per polygon at least); it needs the hierarchical solver, so it is refused clearly.
+constexpr std::size_t kMaxDensePolygons = 6000;
+// `auto` solves scenes with at most this many convex polygons densely (LU): a handful of
+// walls, where the exact matrix costs less than building a hierarchy.
+constexpr std::size_t kMaxAutoDensePolygons = 12;
+
+// All pieces as triangle fans, and the piece of each triangle.
+std::pair<std::vector<Triangle>, std::vector<int>> occluder_triangles(const PreparedScene& scene) {
+    std::vector<Triangle> tris;
+    std::vector<int> piece;
+    for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
+        const auto& v = scene.pieces[i].vertices;
+        for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+            tris.push_back({v[0], v[k], v[k + 1]});
+            piece.push_back(static_cast<int>(i));
+        }
+    }
+    return {tris, piece};
+}
+
+}  // namespace
+
+Pipeline::Pipeline(const Scene& scene, const SolveOptions& options, SolveObserver* observer,
+                   const CancellationToken* cancel)
+    : scene_(scene), options_(options), observer_(observer), cancel_(cancel),
+      start_(Clock::now()) {
+    if (options.max_seconds) {
+        deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(
+                                 std::chrono::duration<double>(*options.max_seconds));
+    }
+}
+
+void Pipeline::report(const std::string& stage, double fraction, std::size_t iterations,
+                      double error, double unshot) const {
+    if (!observer_) return;
+    Progress p;
+    p.stage = stage;
+    p.fraction = fraction;
+    p.iterations = iterations;
+    p.error_estimate = error;
+    p.unshot_fraction = unshot;
+    p.elapsed_seconds = elapsed();
+    p.rays = rays_;
+    p.elements = elements_;
+    p.links = links_;
+    last_progress_ = p;
+    observer_->on_progress(p);
+}
+
+void Pipeline::publish_snapshot(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
+                                bool final) {
+    if (!observer_) return;
+    Snapshot snapshot;
+    snapshot.version = ++snapshot_version_;
+    snapshot.mesh_version = mesh_version;
+    snapshot.mesh = std::move(mesh);
+    snapshot.progress = last_progress_;
+    snapshot.progress.elapsed_seconds = elapsed();
+    snapshot.final = final;
+    observer_->on_snapshot(snapshot);
+}
+
+void Pipeline::finish_stats(Result& result, const std::string& method, std::size_t patches,
+                            std::size_t iterations, double error_estimate,
+                            double unshot_fraction, int channels, bool stopped) const {
+    SolveStats& st = result.stats;
+    st.method = method;
+    st.patches = patches;
+    st.elements = elements_;
+    st.links = links_;
+    st.iterations = iterations;
+    st.rays = rays_;
+    st.unshot_fraction = unshot_fraction;
+    st.error_estimate = error_estimate;
+    st.channels = channels;
+    st.threads = tbb::this_task_arena::max_concurrency();
+    st.seconds = elapsed();
+    result.status = stopped ? SolveStatus::stopped : SolveStatus::converged;
+}
+
+Result Pipeline::run() {
+    Result result;
+    result.scene = scene_.name;
+
+    report("meshing", 0.0);
+    PreparedSolve prepared;
+    prepared.scene = prepare_scene(scene_);
+    if (prepared.scene.pieces.empty()) {
+        result.error = "the scene has no surface with a non-zero area";
+        return result;
+    }
+    const std::size_t polygons = prepared.scene.pieces.size();
+    std::string method = options_.method;
+    if (method == "auto") {
+        method = polygons <= kMaxAutoDensePolygons ? "direct" : "hierarchical";
+    }
+    if (method != "hierarchical" && polygons > kMaxDensePolygons) {
+        result.error = "the scene has " + std::to_string(polygons) +
+                       " convex polygons; the dense solvers handle at most " +
+                       std::to_string(kMaxDensePolygons) + " (use method \"hierarchical\")";
+        return result;
+    }
+    omerr().disable();  // T-junction fallbacks are expected, not errors to print
+    auto [triangles, triangle_piece] = occluder_triangles(prepared.scene);
+    prepared.triangle_piece = std::move(triangle_piece);
+    prepared.visibility = make_embree_visibility(triangles);
+    prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility, options_.seed);
+    Result solved = method == "hierarchical" ? run_hierarchical(prepared)
+                                             : run_dense(prepared, method);
+    report("done", 1.0, solved.stats.iterations, solved.stats.error_estimate,
+           solved.stats.unshot_fraction);
+    return solved;
+}
+
+Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& requested) {
+    Result result;
+    result.scene = scene_.name;
+    const PreparedScene& prepared = solve_input.scene;
+    const Visibility& visibility = *solve_input.visibility;
+    PatchMesh patches(prepared, {target_patch_edge(solve_input.mean_free_path_m, options_.tolerance),
+                                 kMaxDensePatches});
+    const std::size_t n = patches.size();
+    const int channels = prepared.channels;
+
+    const OcclusionCulling culling(prepared);
+    TransportOptions transport_options;
+    transport_options.seed = options_.seed;
+    const Transport transport(prepared, patches, visibility, culling, transport_options,
+                              enclosed_patches(prepared, patches, visibility,
+                                               solve_input.triangle_piece, options_.seed));
+
+    // Form factors, one receiver row per task; rays counted per thread.
+    report("form factors", 0.05);
+    std::vector<float> form_factors(n * n, 0.0f);
+    std::vector<Rgb> luminaire_irradiance(n, Rgb{0, 0, 0});
+    tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
+    std::atomic<bool> interrupted{false};
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        if (interrupted.load(std::memory_order_relaxed)) return;
+        if (should_stop()) {
+            interrupted = true;
+            return;
+        }
+        std::uint64_t& local = ray_count.local();
+        transport.form_factor_row(i, &form_factors[i * n], local);
+        luminaire_irradiance[i] = transport.luminaire_irradiance_on_patch(i, local);
+    });
+    rays_ += ray_count.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
+    elements_ = n;
+    links_ = static_cast<std::size_t>(
+        std::count_if(form_factors.begin(), form_factors.end(), [](float f) { return f > 0; }));
+
+    LinearSystem system;
+    system.n = n;
+    system.channels = channels;
+    system.form_factors = &form_factors;
+    system.area_m2.resize(n);
+    for (int c = 0; c < channels; ++c) {
+        system.reflectance[static_cast<std::size_t>(c)].resize(n);
+        system.source[static_cast<std::size_t>(c)].resize(n);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const PatchGeometry& p = patches.patch(i);
+        const PreparedMaterial& m = prepared.materials[static_cast<std::size_t>(p.material)];
+        system.area_m2[i] = p.area_m2;
+        for (int c = 0; c < channels; ++c) {
+            const auto ci = static_cast<std::size_t>(c);
+            const double emitted = p.back_side || p.hidden ? 0.0 : m.exitance_lm_m2[ci];
+            system.reflectance[ci][i] = m.reflectance[ci];
+            system.source[ci][i] = emitted + m.reflectance[ci] * luminaire_irradiance[i][ci];
+        }
+    }
+    auto display_mesh = [&](const std::array<std::vector<double>, 3>& v) {
+        std::vector<double> display(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            display[i] = photometric(Rgb{v[0][i], channels > 1 ? v[1][i] : 0, channels > 1 ? v[2][i] : 0}, channels);
+        }
+        return std::make_shared<const SolvedMesh>(gouraud_mesh(patches, display, prepared.world_origin));
+    };
+
+    // Solve.
+    const std::string& method = requested;
+    const auto solver = make_solver(method);
+    SolverOutcome outcome;
+    bool stopped = interrupted.load();
+    if (!stopped) {
+        report("solving", 0.6);
+        SolverControl control;
+        control.tolerance = options_.tolerance / 4;  // leave most of the budget to meshing error
+        control.deadline = deadline_;
+        control.cancel = cancel_;
+        control.progress = [&](std::size_t it, double err, double unshot) {
+            report("solving", 0.6 + 0.3 * std::clamp(std::log(std::max(err, 1e-300)) /
+                                                         std::log(control.tolerance), 0.0, 1.0),
+                   it, err, unshot);
+        };
+        if (observer_) {
+            control.snapshot = [&](const std::array<std::vector<double>, 3>& radiosity) {
+                publish_snapshot(display_mesh(radiosity), 1, false);
+            };
+            control.snapshot_interval =
+                std::chrono::duration<double>(options_.snapshot_interval_seconds);
+        }
+        outcome = solver->solve(system, control);
+        stopped = !outcome.converged;
+    } else {
+        // Interrupted before the matrix was complete: the best answer is the first bounce.
+        for (int c = 0; c < channels; ++c) {
+            outcome.radiosity[static_cast<std::size_t>(c)] = system.source[static_cast<std::size_t>(c)];
+        }
+        outcome.error_estimate = 1.0;
+        outcome.unshot_fraction = 1.0;
+    }
+
+    // Irradiance per patch: H = F·B + direct light from luminaires.
+    std::vector<SolvedElement> solved(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const PatchGeometry& p = patches.patch(i);
+        solved[i] = {p.surface, p.material, p.area_m2, p.back_side, p.hidden, {0, 0, 0}, {0, 0, 0}};
+    }
+    for (int c = 0; c < channels; ++c) {
+        const auto ci = static_cast<std::size_t>(c);
+        const std::vector<double>& b = outcome.radiosity[ci];
+        tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+            double g = 0;
+            for (std::size_t j = 0; j < n; ++j) g += form_factors[i * n + j] * b[j];
+            solved[i].irradiance[ci] = g + luminaire_irradiance[i][ci];
+            solved[i].radiosity[ci] = b[i];
+        });
+    }
+
+    report("sensors", 0.9, outcome.iterations, outcome.error_estimate, outcome.unshot_fraction);
+    result.sensors = gather_sensors(prepared, transport, outcome.radiosity, channels, rays_);
+    SurfaceSummary summary = summarise_surfaces(prepared, solved, channels);
+    result.surfaces = std::move(summary.surfaces);
+    result.stats.emitted_flux_lm = summary.emitted_flux_lm;
+    result.stats.absorbed_flux_lm = summary.absorbed_flux_lm;
+    const auto mesh = display_mesh(outcome.radiosity);
+    if (options_.want_mesh) result.mesh = *mesh;
+    finish_stats(result, std::string(solver ? solver->name() : method), n, outcome.iterations,
+                 outcome.error_estimate, outcome.unshot_fraction, channels, stopped);
+    last_progress_.error_estimate = outcome.error_estimate;
+    publish_snapshot(mesh, 1, true);
+    return result;
+}
+
+}  // namespace radiant

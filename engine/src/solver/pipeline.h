@@ -1,0 +1,65 @@
+// The engine's pipeline behind solve(): prepare the scene, build visibility, then either the
+// dense path (patch mesh, full form-factor matrix, one of the matrix solvers) or the
+// hierarchical one (element tree, links, sweeps), then sensors and summaries.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "radiant/solve.h"
+#include "scene/prepared_scene.h"
+#include "visibility/visibility.h"
+
+namespace radiant {
+
+/// Everything both paths share once the scene is prepared.
+struct PreparedSolve {
+    PreparedScene scene;
+    std::vector<int> triangle_piece;  ///< piece of each visibility triangle
+    std::unique_ptr<Visibility> visibility;
+    double mean_free_path_m = 0;
+};
+
+class Pipeline {
+public:
+    using Clock = std::chrono::steady_clock;
+
+    Pipeline(const Scene& scene, const SolveOptions& options, SolveObserver* observer,
+             const CancellationToken* cancel);
+
+    Result run();
+
+private:
+    Result run_dense(const PreparedSolve& prepared, const std::string& method);
+    Result run_hierarchical(const PreparedSolve& prepared);
+
+    void report(const std::string& stage, double fraction, std::size_t iterations = 0,
+                double error = 0, double unshot = 0) const;
+    bool should_stop() const {
+        return (cancel_ && cancel_->cancelled()) || (deadline_ && Clock::now() >= *deadline_);
+    }
+    double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+    /// Hands the observer a snapshot of `mesh` (world coordinates, current radiosity).
+    void publish_snapshot(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
+                          bool final);
+    /// Fills the statistics every method reports alike.
+    void finish_stats(Result& result, const std::string& method, std::size_t patches,
+                      std::size_t iterations, double error_estimate, double unshot_fraction,
+                      int channels, bool stopped) const;
+
+    const Scene& scene_;
+    const SolveOptions& options_;
+    SolveObserver* observer_;
+    const CancellationToken* cancel_;
+    Clock::time_point start_;
+    std::optional<Clock::time_point> deadline_;
+    std::uint64_t rays_ = 0;
+    mutable Progress last_progress_;
+    std::uint64_t snapshot_version_ = 0;
+    std::size_t elements_ = 0, links_ = 0;
+};
+
+}  // namespace radiant
