@@ -24,8 +24,8 @@ double flux_fraction_on(const PreparedLuminaire& l, std::span<const Vec3> polygo
     return point_to_polygon_factor(l.position, l.aim, polygon);
 }
 
-Rgb luminaire_irradiance_at(const PreparedScene& scene, const Visibility& visibility,
-                            const Vec3& x, const Vec3& n, std::uint64_t& rays) {
+Rgb luminaire_irradiance_at(const PreparedScene& scene, const Visibility& visibility, const Vec3& x,
+                            const Vec3& n, std::uint64_t& rays) {
     Rgb e{0, 0, 0};
     const double eps = visibility.epsilon();
     for (const PreparedLuminaire& l : scene.luminaires) {

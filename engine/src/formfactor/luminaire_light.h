@@ -18,7 +18,7 @@ double flux_fraction_on(const PreparedLuminaire& luminaire, std::span<const Vec3
 
 /// Irradiance (lux, per channel) from every luminaire at point x with unit normal n, with one
 /// shadow ray per luminaire in front of x. Counts rays into `rays`.
-Rgb luminaire_irradiance_at(const PreparedScene& scene, const Visibility& visibility,
-                            const Vec3& x, const Vec3& n, std::uint64_t& rays);
+Rgb luminaire_irradiance_at(const PreparedScene& scene, const Visibility& visibility, const Vec3& x,
+                            const Vec3& n, std::uint64_t& rays);
 
 }  // namespace radiant

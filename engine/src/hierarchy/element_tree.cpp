@@ -25,7 +25,10 @@ double photometric(const Rgb& c, int channels) { return channels == 1 ? c[0] : l
 
 ElementTree::ElementTree(const PreparedScene& scene, const PatchMesh& patches,
                          const Visibility& visibility, double min_edge_m, std::uint64_t seed)
-    : scene_(scene), patches_(patches), visibility_(visibility), min_edge_m_(min_edge_m),
+    : scene_(scene),
+      patches_(patches),
+      visibility_(visibility),
+      min_edge_m_(min_edge_m),
       seed_(seed) {
     elements_.reserve(4 * patches.size() + 16);
     patch_element_.assign(patches.size(), -1);
@@ -86,7 +89,8 @@ int ElementTree::build_clusters(std::vector<int>& items, std::size_t begin, std:
         }
     }
     const Vec3 extent = hi - lo;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const std::size_t mid = begin + (end - begin) / 2;
     std::nth_element(items.begin() + static_cast<std::ptrdiff_t>(begin),
                      items.begin() + static_cast<std::ptrdiff_t>(mid),
@@ -117,7 +121,8 @@ int ElementTree::build_clusters(std::vector<int>& items, std::size_t begin, std:
     // Receiver points spread over the contents by area, stratified.
     std::vector<double> cdf;
     double total = 0;
-    for (const int r : contents) cdf.push_back(total += elements_[static_cast<std::size_t>(r)].area_m2);
+    for (const int r : contents)
+        cdf.push_back(total += elements_[static_cast<std::size_t>(r)].area_m2);
     SampleStream rng(seed_, 0x636c7573ull, index);
     for (int s = 0; s < kClusterSamples; ++s) {
         const double pick = (s + rng.next()) / kClusterSamples * total;
@@ -146,7 +151,8 @@ void ElementTree::subdivide(int e) {
     const Element parent = elements_[static_cast<std::size_t>(e)];  // copy: push_back reallocates
     std::vector<int> children;
     for (auto& part : split_in_four(parent.polygon)) {
-        const int c = add_surface(std::move(part), parent.normal, parent.patch, e, parent.depth + 1);
+        const int c =
+            add_surface(std::move(part), parent.normal, parent.patch, e, parent.depth + 1);
         Element& child = elements_[static_cast<std::size_t>(c)];
         child.radiosity = parent.radiosity;
         child.radiosity_max = parent.radiosity_max;
@@ -176,8 +182,8 @@ void ElementTree::estimate_from(std::size_t first, double ambient_irradiance, in
         Element& e = elements_[i];
         if (e.cluster) continue;
         for (int c = 0; c < 3; ++c) {
-            e.radiosity[c] = e.exitance[c] +
-                             e.reflectance[c] * (e.luminaire_irradiance[c] + ambient_irradiance);
+            e.radiosity[c] =
+                e.exitance[c] + e.reflectance[c] * (e.luminaire_irradiance[c] + ambient_irradiance);
         }
         e.radiosity_max = photometric(e.radiosity, channels);
     }

@@ -33,10 +33,10 @@ struct Element {
     int patch = -1;  ///< root patch of a surface element; −1 for clusters
     int depth = 0;   ///< subdivisions below the root patch
     bool cluster = false;
-    bool emits = false;  ///< some emitter is in it
+    bool emits = false;                ///< some emitter is in it
     std::vector<SamplePoint> samples;  ///< receiver points (surfaces: quadrature; clusters: spread)
-    Rgb reflectance{0, 0, 0};  ///< surfaces: their material; clusters: the largest inside
-    Rgb exitance{0, 0, 0};     ///< emitted, lm/m² (surfaces only)
+    Rgb reflectance{0, 0, 0};          ///< surfaces: their material; clusters: the largest inside
+    Rgb exitance{0, 0, 0};             ///< emitted, lm/m² (surfaces only)
     Rgb luminaire_irradiance{0, 0, 0};  ///< direct from point luminaires, area average
     Rgb radiosity{0, 0, 0};             ///< current solution; interior nodes: area average
     Rgb gathered{0, 0, 0};              ///< irradiance through this element's own links
@@ -77,7 +77,8 @@ public:
     std::size_t leaf_count() const;
 
 private:
-    int add_surface(std::vector<Vec3> polygon, const Vec3& normal, int patch, int parent, int depth);
+    int add_surface(std::vector<Vec3> polygon, const Vec3& normal, int patch, int parent,
+                    int depth);
     int build_clusters(std::vector<int>& items, std::size_t begin, std::size_t end);
     void light_from_luminaires(Element& e, std::uint64_t& rays) const;
     void pull(int e, int channels);

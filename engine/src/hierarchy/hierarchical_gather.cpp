@@ -74,14 +74,15 @@ private:
                           std::uint64_t key, bool exact_leaf, std::uint64_t& rays) const {
         const double f = front_point_to_polygon_factor(x, n, e.polygon, e.normal);
         if (f <= 0) return 0;
-        const int m = exact_leaf && e.emits ? criteria_.emitter_rays_per_point
-                                            : criteria_.rays_per_point;
+        const int m =
+            exact_leaf && e.emits ? criteria_.emitter_rays_per_point : criteria_.rays_per_point;
         SampleStream rng(criteria_.seed, key, static_cast<std::uint64_t>(index));
         return f * visible_fraction(visibility_, x, n, e.polygon, polygon_centroid(e.polygon),
                                     e.normal, m, rng, rays);
     }
 
-    double cluster_factor(const Vec3& x, const Vec3& n, const Element& e, std::uint64_t& rays) const {
+    double cluster_factor(const Vec3& x, const Vec3& n, const Element& e,
+                          std::uint64_t& rays) const {
         double g = 0;
         const double eps = visibility_.epsilon();
         for (const SamplePoint& y : e.samples) {

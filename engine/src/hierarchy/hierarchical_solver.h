@@ -35,8 +35,9 @@ public:
 
 private:
     struct Residual {
-        std::array<double, 3> inf{0, 0, 0}, area_l1{0, 0, 0};
+        std::array<double, 3> inf{0, 0, 0}, area_l1{0, 0, 0}, area_signed{0, 0, 0};
     };
+    void extrapolate(const Residual& now, const Residual& before);
     void gather();
     void push(int e, const Rgb& down, double factor_sum, Residual& residual);
 
@@ -46,6 +47,7 @@ private:
     const std::vector<char>& enclosed_patch_;
     int channels_;
     std::vector<Rgb> irradiance_;
+    std::vector<Rgb> change_;  // each leaf's change in the last sweep
     double q_inf_ = 0;
 };
 

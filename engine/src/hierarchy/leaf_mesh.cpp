@@ -13,8 +13,8 @@ SolvedMesh leaf_mesh(const ElementTree& tree, const PatchMesh& patches, int chan
     SolvedMesh mesh;
     // Vertices are shared within one plane of one surface side: midpoints of shared edges are
     // computed alike on both sides, so exact coordinates match.
-    using Key = std::tuple<int, bool, std::tuple<long long, long long, long long>, double, double,
-                           double>;
+    using Key =
+        std::tuple<int, bool, std::tuple<long long, long long, long long>, double, double, double>;
     std::map<Key, int> index;
     std::vector<double> weight;
     for (std::size_t e = 0; e < tree.size(); ++e) {
@@ -22,8 +22,9 @@ SolvedMesh leaf_mesh(const ElementTree& tree, const PatchMesh& patches, int chan
         if (x.cluster || !x.leaf()) continue;
         const PatchGeometry& p = patches.patch(static_cast<std::size_t>(x.patch));
         const double b = photometric(x.radiosity, channels);
-        const auto plane = std::make_tuple(std::llround(x.normal.x * 1e9), std::llround(x.normal.y * 1e9),
-                                           std::llround(x.normal.z * 1e9));
+        const auto plane =
+            std::make_tuple(std::llround(x.normal.x * 1e9), std::llround(x.normal.y * 1e9),
+                            std::llround(x.normal.z * 1e9));
         std::vector<int> corners;
         for (const Vec3& v : x.polygon) {
             const Key key{p.surface, p.back_side, plane, v.x, v.y, v.z};

@@ -8,8 +8,8 @@
 #include <tbb/parallel_for.h>
 
 #include "formfactor/point_polygon.h"
-#include "formfactor/shadow_rays.h"
 #include "formfactor/quadrature.h"
+#include "formfactor/shadow_rays.h"
 #include "geometry/random.h"
 
 namespace radiant {
@@ -39,9 +39,9 @@ struct Verdict {
 
 // Kernel values at the receiver's points: unoccluded, or with sampled visibility.
 struct KernelSamples {
-    double factor = 0;  ///< weighted mean: the link's K
-    double spread = 0;  ///< max − min over the points
-    bool partial = false;  ///< some but not all shadow rays of some point were blocked
+    double factor = 0;                  ///< weighted mean: the link's K
+    double spread = 0;                  ///< max − min over the points
+    bool partial = false;               ///< some but not all shadow rays of some point were blocked
     std::vector<double> sample_factor;  ///< cluster sources: K carried by each sample point
 };
 
@@ -77,7 +77,8 @@ public:
             v.parts.push_back({p.source, seen.factor});
         } else {
             for (std::size_t m = 0; m < s.samples.size(); ++m) {
-                if (seen.sample_factor[m] > 0) v.parts.push_back({s.samples[m].root, seen.sample_factor[m]});
+                if (seen.sample_factor[m] > 0)
+                    v.parts.push_back({s.samples[m].root, seen.sample_factor[m]});
             }
         }
         return v;
@@ -112,7 +113,8 @@ private:
     static Decision choose_split(const Element& r, const Element& s, bool split_r, bool split_s) {
         if (r.cluster) return Decision::split_receiver;
         if (split_r && split_s) {
-            if (r.cluster != s.cluster) return r.cluster ? Decision::split_receiver : Decision::split_source;
+            if (r.cluster != s.cluster)
+                return r.cluster ? Decision::split_receiver : Decision::split_source;
             return r.diameter_m >= s.diameter_m ? Decision::split_receiver : Decision::split_source;
         }
         if (split_r) return Decision::split_receiver;
@@ -158,8 +160,8 @@ private:
 
     // A cluster as the sum of its sample points, each carrying a share of its area: the
     // classic point-to-disk kernel A cosθ cosθ' / (πr² + A), bounded as r → 0.
-    double from_cluster(const SamplePoint& x, const Element& s, bool visibility,
-                        KernelSamples& out, std::uint64_t& rays) const {
+    double from_cluster(const SamplePoint& x, const Element& s, bool visibility, KernelSamples& out,
+                        std::uint64_t& rays) const {
         double g = 0;
         int seen = 0, tried = 0;
         for (std::size_t m = 0; m < s.samples.size(); ++m) {
@@ -174,7 +176,8 @@ private:
             if (visibility) {
                 ++tried;
                 ++rays;
-                if (!visibility_.visible(x.position + x.normal * eps_, y.position + y.normal * eps_)) {
+                if (!visibility_.visible(x.position + x.normal * eps_,
+                                         y.position + y.normal * eps_)) {
                     continue;
                 }
                 ++seen;
@@ -236,7 +239,8 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
             }
             const Verdict& v = verdicts[i];
             switch (v.decision) {
-                case Decision::drop: break;
+                case Decision::drop:
+                    break;
                 case Decision::link:
                     for (const SourcePart& part : v.parts) {
                         out.links.push_back(
@@ -269,7 +273,8 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
     std::vector<Link> merged;
     merged.reserve(out.links.size());
     for (const Link& l : out.links) {
-        if (!merged.empty() && merged.back().receiver == l.receiver && merged.back().source == l.source) {
+        if (!merged.empty() && merged.back().receiver == l.receiver &&
+            merged.back().source == l.source) {
             merged.back().factor += l.factor;
         } else {
             merged.push_back(l);

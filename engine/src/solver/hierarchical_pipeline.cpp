@@ -19,8 +19,8 @@ namespace {
 constexpr double kRootEdgeFactor = 4;
 // Elements stop splitting at this fraction of the dense path's patch edge.
 constexpr double kMinEdgeFactor = 0.25;
-// A link may leave this fraction of tolerance × emitted power uncertain (RenderPark's default
-// relative threshold is 1e-5 of the power at a 1 % tolerance).
+// A link may leave this fraction of tolerance × the power leaving all surfaces uncertain
+// (RenderPark's default relative threshold is 1e-5 of the power at a 1 % tolerance).
 constexpr double kLinkPowerFraction = 1e-3;
 // A node may add this fraction of tolerance × the mean irradiance to a sensor unopened.
 constexpr double kGatherIrradianceFraction = 0.02;
@@ -51,7 +51,8 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         const PreparedMaterial& m = scene.materials[static_cast<std::size_t>(p.material)];
         area += p.area_m2;
         rho_area += p.area_m2 * photometric(m.reflectance, channels);
-        if (!p.back_side && !p.hidden) emitted += p.area_m2 * photometric(m.exitance_lm_m2, channels);
+        if (!p.back_side && !p.hidden)
+            emitted += p.area_m2 * photometric(m.exitance_lm_m2, channels);
     }
     for (const PreparedLuminaire& l : scene.luminaires) emitted += photometric(l.flux_lm, channels);
     const double rho_mean = area > 0 ? std::min(rho_area / area, 0.999) : 0;
@@ -60,7 +61,13 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
 
     report("form factors", 0.05);
     RefinementCriteria criteria;
-    criteria.power_epsilon_lm = kLinkPowerFraction * options_.tolerance * emitted;
+    // Relative to all the light leaving surfaces (emitted and reflected), as the solution's error.
+    double radiant_power = 0;
+    for (std::size_t e = 0; e < tree.size(); ++e) {
+        if (!tree[e].cluster)
+            radiant_power += tree[e].area_m2 * photometric(tree[e].radiosity, channels);
+    }
+    criteria.power_epsilon_lm = kLinkPowerFraction * options_.tolerance * radiant_power;
     criteria.seed = options_.seed;
     criteria.ambient_irradiance = ambient;
     criteria.channels = channels;
@@ -77,8 +84,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     control.deadline = deadline_;
     control.cancel = cancel_;
     control.progress = [&](std::size_t it, double err, double unshot) {
-        report("solving", 0.6 + 0.3 * std::clamp(std::log(std::max(err, 1e-300)) /
-                                                     std::log(control.tolerance), 0.0, 1.0),
+        report("solving",
+               0.6 + 0.3 * std::clamp(std::log(std::max(err, 1e-300)) / std::log(control.tolerance),
+                                      0.0, 1.0),
                it, err, unshot);
     };
     control.snapshot_interval = std::chrono::duration<double>(options_.snapshot_interval_seconds);
@@ -103,13 +111,15 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     }
     for (std::size_t i = 0; i < roots.size(); ++i) {
         const PatchGeometry& p = roots.patch(i);
-        if (p.hidden) solved.push_back({p.surface, p.material, p.area_m2, p.back_side, true, {}, {}});
+        if (p.hidden)
+            solved.push_back({p.surface, p.material, p.area_m2, p.back_side, true, {}, {}});
     }
     const double error_estimate = outcome.error_estimate;
 
     report("sensors", 0.9, outcome.iterations, error_estimate, 0);
     double mean_irradiance = 0;
-    for (const SolvedElement& s : solved) mean_irradiance += s.area_m2 * photometric(s.irradiance, channels);
+    for (const SolvedElement& s : solved)
+        mean_irradiance += s.area_m2 * photometric(s.irradiance, channels);
     mean_irradiance = area > 0 ? mean_irradiance / area : 0;
     GatherCriteria gather;
     gather.irradiance_epsilon = kGatherIrradianceFraction * options_.tolerance * mean_irradiance;

@@ -4,10 +4,10 @@
 #include <atomic>
 #include <cmath>
 
-#include <OpenMesh/Core/System/omstream.hh>
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <OpenMesh/Core/System/omstream.hh>
 
 #include "formfactor/enclosure.h"
 #include "formfactor/transport.h"
@@ -26,9 +26,11 @@ constexpr std::size_t kMaxDensePatches = 3000;
 // A model with more polygons than this cannot be meshed within the dense solvers' budget
 // (one patch per polygon at least); it needs the hierarchical solver, so it is refused clearly.
 constexpr std::size_t kMaxDensePolygons = 6000;
-// `auto` solves scenes with at most this many convex polygons densely (LU): a handful of
-// walls, where the exact matrix costs less than building a hierarchy.
+// `auto` solves scenes with at most this many convex polygons densely: a handful of walls,
+// where the full matrix costs less than building a hierarchy.
 constexpr std::size_t kMaxAutoDensePolygons = 12;
+// LU (O(n³)) beats iteration up to about here on two cores, at any reflectance.
+constexpr std::size_t kMaxAutoDirectPatches = 1500;
 
 // All pieces as triangle fans, and the piece of each triangle.
 std::pair<std::vector<Triangle>, std::vector<int>> occluder_triangles(const PreparedScene& scene) {
@@ -48,8 +50,7 @@ std::pair<std::vector<Triangle>, std::vector<int>> occluder_triangles(const Prep
 
 Pipeline::Pipeline(const Scene& scene, const SolveOptions& options, SolveObserver* observer,
                    const CancellationToken* cancel)
-    : scene_(scene), options_(options), observer_(observer), cancel_(cancel),
-      start_(Clock::now()) {
+    : scene_(scene), options_(options), observer_(observer), cancel_(cancel), start_(Clock::now()) {
     if (options.max_seconds) {
         deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(
                                  std::chrono::duration<double>(*options.max_seconds));
@@ -87,8 +88,8 @@ void Pipeline::publish_snapshot(std::shared_ptr<const SolvedMesh> mesh, std::uin
 }
 
 void Pipeline::finish_stats(Result& result, const std::string& method, std::size_t patches,
-                            std::size_t iterations, double error_estimate,
-                            double unshot_fraction, int channels, bool stopped) const {
+                            std::size_t iterations, double error_estimate, double unshot_fraction,
+                            int channels, bool stopped) const {
     SolveStats& st = result.stats;
     st.method = method;
     st.patches = patches;
@@ -117,9 +118,7 @@ Result Pipeline::run() {
     }
     const std::size_t polygons = prepared.scene.pieces.size();
     std::string method = options_.method;
-    if (method == "auto") {
-        method = polygons <= kMaxAutoDensePolygons ? "direct" : "hierarchical";
-    }
+    if (method == "auto" && polygons > kMaxAutoDensePolygons) method = "hierarchical";
     if (method != "hierarchical" && polygons > kMaxDensePolygons) {
         result.error = "the scene has " + std::to_string(polygons) +
                        " convex polygons; the dense solvers handle at most " +
@@ -131,8 +130,8 @@ Result Pipeline::run() {
     prepared.triangle_piece = std::move(triangle_piece);
     prepared.visibility = make_embree_visibility(triangles);
     prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility, options_.seed);
-    Result solved = method == "hierarchical" ? run_hierarchical(prepared)
-                                             : run_dense(prepared, method);
+    Result solved =
+        method == "hierarchical" ? run_hierarchical(prepared) : run_dense(prepared, method);
     report("done", 1.0, solved.stats.iterations, solved.stats.error_estimate,
            solved.stats.unshot_fraction);
     return solved;
@@ -143,17 +142,18 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     result.scene = scene_.name;
     const PreparedScene& prepared = solve_input.scene;
     const Visibility& visibility = *solve_input.visibility;
-    PatchMesh patches(prepared, {target_patch_edge(solve_input.mean_free_path_m, options_.tolerance),
-                                 kMaxDensePatches});
+    PatchMesh patches(
+        prepared,
+        {target_patch_edge(solve_input.mean_free_path_m, options_.tolerance), kMaxDensePatches});
     const std::size_t n = patches.size();
     const int channels = prepared.channels;
 
     const OcclusionCulling culling(prepared);
     TransportOptions transport_options;
     transport_options.seed = options_.seed;
-    const Transport transport(prepared, patches, visibility, culling, transport_options,
-                              enclosed_patches(prepared, patches, visibility,
-                                               solve_input.triangle_piece, options_.seed));
+    const Transport transport(
+        prepared, patches, visibility, culling, transport_options,
+        enclosed_patches(prepared, patches, visibility, solve_input.triangle_piece, options_.seed));
 
     // Form factors, one receiver row per task; rays counted per thread.
     report("form factors", 0.05);
@@ -199,13 +199,16 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     auto display_mesh = [&](const std::array<std::vector<double>, 3>& v) {
         std::vector<double> display(n);
         for (std::size_t i = 0; i < n; ++i) {
-            display[i] = photometric(Rgb{v[0][i], channels > 1 ? v[1][i] : 0, channels > 1 ? v[2][i] : 0}, channels);
+            display[i] = photometric(
+                Rgb{v[0][i], channels > 1 ? v[1][i] : 0, channels > 1 ? v[2][i] : 0}, channels);
         }
-        return std::make_shared<const SolvedMesh>(gouraud_mesh(patches, display, prepared.world_origin));
+        return std::make_shared<const SolvedMesh>(
+            gouraud_mesh(patches, display, prepared.world_origin));
     };
 
     // Solve.
-    const std::string& method = requested;
+    const std::string method =
+        requested != "auto" ? requested : (n <= kMaxAutoDirectPatches ? "direct" : "gauss-seidel");
     const auto solver = make_solver(method);
     SolverOutcome outcome;
     bool stopped = interrupted.load();
@@ -216,8 +219,10 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         control.deadline = deadline_;
         control.cancel = cancel_;
         control.progress = [&](std::size_t it, double err, double unshot) {
-            report("solving", 0.6 + 0.3 * std::clamp(std::log(std::max(err, 1e-300)) /
-                                                         std::log(control.tolerance), 0.0, 1.0),
+            report("solving",
+                   0.6 + 0.3 * std::clamp(
+                                   std::log(std::max(err, 1e-300)) / std::log(control.tolerance),
+                                   0.0, 1.0),
                    it, err, unshot);
         };
         if (observer_) {
@@ -232,7 +237,8 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     } else {
         // Interrupted before the matrix was complete: the best answer is the first bounce.
         for (int c = 0; c < channels; ++c) {
-            outcome.radiosity[static_cast<std::size_t>(c)] = system.source[static_cast<std::size_t>(c)];
+            outcome.radiosity[static_cast<std::size_t>(c)] =
+                system.source[static_cast<std::size_t>(c)];
         }
         outcome.error_estimate = 1.0;
         outcome.unshot_fraction = 1.0;

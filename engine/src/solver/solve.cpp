@@ -44,8 +44,7 @@ Result solve(const Scene& scene, const SolveOptions& options, SolveObserver* obs
             result.error = "unknown method \"" + options.method + "\"";
             return result;
         }
-        tbb::task_arena arena(options.threads > 0 ? options.threads
-                                                  : tbb::task_arena::automatic);
+        tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
         arena.execute([&] { result = Pipeline(scene, options, observer, cancel).run(); });
     } catch (const std::exception& e) {
         result = Result{};
@@ -64,16 +63,19 @@ SolveOptions options_from(const Settings& settings) {
 }
 
 const std::vector<std::string>& solver_names() {
-    static const std::vector<std::string> names{"auto",         "hierarchical", "direct",
-                                                "jacobi",       "gauss-seidel", "shooting"};
+    static const std::vector<std::string> names{"auto",   "hierarchical", "direct",
+                                                "jacobi", "gauss-seidel", "shooting"};
     return names;
 }
 
 const char* to_string(SolveStatus status) {
     switch (status) {
-        case SolveStatus::converged: return "converged";
-        case SolveStatus::stopped: return "stopped";
-        case SolveStatus::failed: return "failed";
+        case SolveStatus::converged:
+            return "converged";
+        case SolveStatus::stopped:
+            return "stopped";
+        case SolveStatus::failed:
+            return "failed";
     }
     return "failed";
 }
