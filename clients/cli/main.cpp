@@ -7,6 +7,7 @@
 
 #include "exit_codes.h"
 #include "http_client.h"
+#include "import_command.h"
 #include "job_document_command.h"
 #include "solve_command.h"
 #include "submit_command.h"
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
         app.require_subcommand(1);
         radiant::cli::add_solve_command(app, exit_code);
         radiant::cli::add_validate_command(app, exit_code);
+        radiant::cli::add_import_command(app, exit_code);
         radiant::cli::add_submit_command(app, exit_code);
         radiant::cli::add_job_document_command(app, exit_code, "status",
                                                "Print a radiantd job's state as JSON", "");

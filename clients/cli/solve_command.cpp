@@ -12,6 +12,7 @@
 
 #include "atomic_file.h"
 #include "exit_codes.h"
+#include "radiant/proto/result_gltf.h"
 #include "radiant/proto/result_json.h"
 #include "radiant/proto/scene_json.h"
 #include "radiant/solve.h"
@@ -22,6 +23,7 @@ namespace {
 struct SolveArgs {
     std::string scene;
     std::string out;
+    std::string gltf;
     std::optional<double> tolerance;
     std::optional<double> max_seconds;
     std::optional<int> threads;
@@ -68,7 +70,7 @@ int run_solve(const SolveArgs& args) {
     if (args.max_seconds) options.max_seconds = *args.max_seconds;
     if (args.threads) options.threads = *args.threads;
     if (args.method) options.method = *args.method;
-    options.want_mesh = args.mesh;
+    options.want_mesh = args.mesh || !args.gltf.empty();
 
     Result result;
     {
@@ -76,6 +78,10 @@ int run_solve(const SolveArgs& args) {
         if (::isatty(STDERR_FILENO)) progress.emplace();
         result = solve(*outcome.scene, options, progress ? &*progress : nullptr);
     }
+    if (!args.gltf.empty() && result.status != SolveStatus::failed) {
+        write_file_atomically(args.gltf, proto::result_to_glb(result, *outcome.scene));
+    }
+    if (!args.mesh) result.mesh.reset();  // requested for the glTF only
     const std::string text = proto::result_to_json(result).dump(2) + "\n";
     if (args.out.empty()) {
         std::cout << text << std::flush;
@@ -111,6 +117,8 @@ void add_solve_command(CLI::App& app, int& exit_code) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--method", args->method, "solver")->check(CLI::IsMember(solver_names()));
     cmd->add_flag("--mesh", args->mesh, "include the solved mesh in the result");
+    cmd->add_option("--gltf", args->gltf,
+                    "also write the solved mesh and sensors as binary glTF (.glb) here");
     cmd->callback([args, &exit_code] { exit_code = run_solve(*args); });
 }
 

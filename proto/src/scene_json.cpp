@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "import/surface_import.h"
 #include "json_text.h"
 #include "radiant/solve.h"
 
@@ -35,13 +36,16 @@ std::string entity_of(const std::string& pointer) {
 /// by placeholders, so that every entity keeps its index and later checks keep their pointers.
 class SceneReader {
   public:
-    explicit SceneReader(const ParseLimits& limits) : limits_(limits) {}
+      SceneReader(const ParseLimits& limits, std::optional<std::filesystem::path> scene_directory)
+          : limits_(limits), scene_directory_(std::move(scene_directory)) {}
 
-    Scene read(const Json& root);
+      Scene read(const Json& root);
 
-    std::vector<Problem> problems_;
-    std::set<std::string> broken_;        ///< entities with a value that could not be read
-    std::set<std::size_t> grid_sensors_;  ///< sensor sets whose points come from a grid
+      std::vector<Problem> problems_;
+      std::set<std::string> broken_;        ///< entities with a value that could not be read
+      std::set<std::size_t> grid_sensors_;  ///< sensor sets whose points come from a grid
+      /// Per engine surface: its document index and, for an imported model, the key naming it.
+      std::vector<std::pair<std::size_t, std::string>> surface_origins_;
 
   private:
     void report(const Ptr& p, std::string message, bool breaks = true) {
@@ -139,6 +143,7 @@ class SceneReader {
 
     Material material(const std::string& name, const Json& j, const Ptr& p);
     std::optional<Emission> emission(const Json& j, const Ptr& p);
+    void add_surfaces(Scene& scene, const Json& j, const Ptr& p, std::size_t index);
     Surface surface(const Json& j, const Ptr& p);
     MeshGeometry mesh(const Json& j, const Ptr& p);
     BoxGeometry box(const Json& j, const Ptr& p);
@@ -148,6 +153,7 @@ class SceneReader {
     Settings settings(const Json& j, const Ptr& p);
 
     const ParseLimits& limits_;
+    std::optional<std::filesystem::path> scene_directory_;
 };
 
 Scene SceneReader::read(const Json& root) {
@@ -186,7 +192,7 @@ Scene SceneReader::read(const Json& root) {
     if (const Json* j = member(root, p, "surfaces", true);
         j && array(*j, p / "surfaces", "surfaces")) {
         for (std::size_t i = 0; i < j->size(); ++i) {
-            scene.surfaces.push_back(surface((*j)[i], p / "surfaces" / i));
+            add_surfaces(scene, (*j)[i], p / "surfaces" / i, i);
         }
     }
     if (const Json* j = member(root, p, "luminaires", false);
@@ -249,17 +255,80 @@ std::optional<Emission> SceneReader::emission(const Json& j, const Ptr& p) {
     return e;
 }
 
+/// A surface that imports a model becomes one engine surface per material of the model. A model
+/// that cannot be read leaves a placeholder, so that later surfaces keep their pointers.
+void SceneReader::add_surfaces(Scene& scene, const Json& j, const Ptr& p, std::size_t index) {
+    static const std::pair<const char*, ImportKind> kinds[] = {
+        {"obj", ImportKind::obj},
+        {"obj_file", ImportKind::obj_file},
+        {"gltf", ImportKind::gltf},
+        {"gltf_file", ImportKind::gltf_file}};
+    const auto* kind = std::find_if(std::begin(kinds), std::end(kinds), [&](const auto& k) {
+        return j.is_object() && j.contains(k.first);
+    });
+    const bool other_geometry =
+        j.is_object() && (j.contains("polygon") || j.contains("mesh") || j.contains("box"));
+    const bool two_models =
+        kind != std::end(kinds) &&
+        std::any_of(kind + 1, std::end(kinds), [&](const auto& k) { return j.contains(k.first); });
+    if (kind == std::end(kinds) || other_geometry || two_models) {
+        surface_origins_.emplace_back(index, "");
+        scene.surfaces.push_back(surface(j, p));
+        return;
+    }
+    check_keys(j, p, {"name", "material", "mtl", kind->first});
+    ImportRequest request;
+    request.kind = kind->second;
+    request.unit = scene.units;
+    request.scene_directory = scene_directory_;
+    request.max_bytes = limits_.max_bytes;
+    const std::size_t problems_before = problems_.size();
+    if (const Json* n = member(j, p, "name", true)) request.name = string(*n, p / "name", "name");
+    if (const Json* m = member(j, p, "material", false))
+        request.material = string(*m, p / "material", "material");
+    if (const Json* m = member(j, p, "mtl", false)) {
+        if (request.kind == ImportKind::obj || request.kind == ImportKind::obj_file) {
+            request.mtl = string(*m, p / "mtl", "mtl");
+        } else {
+            report(p / "mtl", "mtl goes with obj or obj_file");
+        }
+    }
+    request.value = string(j[kind->first], p / kind->first, kind->first);
+    auto imported = problems_.size() == problems_before
+                        ? import_surface(request)
+                        : std::variant<ImportedSurfaces, std::string>(std::string());
+    if (auto* problem = std::get_if<std::string>(&imported)) {
+        if (!problem->empty()) report(p / kind->first, std::move(*problem));
+        surface_origins_.emplace_back(index, "");
+        scene.surfaces.emplace_back();
+        return;
+    }
+    auto& [surfaces, materials] = std::get<ImportedSurfaces>(imported);
+    for (Surface& s : surfaces) {
+        surface_origins_.emplace_back(index, kind->first);
+        scene.surfaces.push_back(std::move(s));
+    }
+    for (Material& m : materials) scene.materials.push_back(std::move(m));
+}
+
 Surface SceneReader::surface(const Json& j, const Ptr& p) {
     Surface s;
     if (!object(j, p, "a surface")) return s;
-    check_keys(j, p, {"name", "material", "polygon", "mesh", "box"});
+    check_keys(j, p,
+               {"name", "material", "polygon", "mesh", "box", "obj", "obj_file", "gltf",
+                "gltf_file", "mtl"});
+    if (j.contains("mtl")) report(p / "mtl", "mtl goes with obj or obj_file", false);
     if (const Json* n = member(j, p, "name", true)) s.name = string(*n, p / "name", "name");
     if (const Json* m = member(j, p, "material", true)) {
         s.material = string(*m, p / "material", "material");
     }
-    const int kinds = int{j.contains("polygon")} + int{j.contains("mesh")} + int{j.contains("box")};
+    int kinds = 0;
+    for (const char* key : {"polygon", "mesh", "box", "obj", "obj_file", "gltf", "gltf_file"})
+        kinds += int{j.contains(key)};
     if (kinds != 1) {
-        report(p, "a surface needs exactly one of polygon, mesh or box");
+        report(
+            p,
+            "a surface needs exactly one of polygon, mesh, box, obj, obj_file, gltf or gltf_file");
     } else if (j.contains("polygon")) {
         s.geometry = points(j["polygon"], p / "polygon", "polygon");
     } else if (j.contains("mesh")) {
@@ -412,9 +481,37 @@ std::string document_pointer(const std::string& pointer, const std::set<std::siz
     return grids.contains(index) ? pointer.substr(0, slash) + "/grid" : pointer;
 }
 
+/// check_scene sees surfaces as the engine does: an imported model may be several surfaces, each
+/// a mesh. Point the user at the document's surface and, for a model, its key and face.
+void to_document_surface(Problem& problem,
+                         const std::vector<std::pair<std::size_t, std::string>>& origins,
+                         const Scene& scene) {
+    static const std::string prefix = "/surfaces/";
+    const std::string& pointer = problem.pointer;
+    if (pointer.rfind(prefix, 0) != 0 || pointer.size() == prefix.size()) return;
+    const std::size_t slash = std::min(pointer.find('/', prefix.size()), pointer.size());
+    const std::size_t engine = std::stoul(pointer.substr(prefix.size(), slash - prefix.size()));
+    if (engine >= origins.size()) return;
+    const auto& [index, key] = origins[engine];
+    const std::string rest = pointer.substr(slash);
+    const std::string surface = prefix + std::to_string(index);
+    static const std::string faces = "/mesh/faces/";
+    if (key.empty() || rest.rfind("/mesh", 0) != 0) {
+        problem.pointer = surface + rest;
+        return;
+    }
+    std::string where = "surface \"" + scene.surfaces[engine].name + "\"";
+    if (rest.rfind(faces, 0) == 0) {
+        where += " face " + rest.substr(faces.size(), rest.find('/', faces.size()) - faces.size());
+    }
+    problem.pointer = surface + "/" + key;
+    problem.message = where + ": " + problem.message;
+}
+
 }  // namespace
 
-ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits) {
+ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits,
+                         const std::optional<std::filesystem::path>& scene_directory) {
     ParseOutcome outcome;
     if (json_text.size() > limits.max_bytes) {
         outcome.problems.push_back({"", "the document is " + std::to_string(json_text.size()) +
@@ -432,13 +529,14 @@ ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits) 
         outcome.problems.push_back({"", "a scene must be a JSON object"});
         return outcome;
     }
-    SceneReader reader(limits);
+    SceneReader reader(limits, scene_directory);
     Scene scene = reader.read(root);
     outcome.problems = std::move(reader.problems_);
     // Placeholders for unreadable values would only produce echoes of the same problem.
     for (Problem& p : check_scene(scene, limits.scene)) {
-        if (reader.broken_.contains(entity_of(p.pointer))) continue;
         p.pointer = document_pointer(p.pointer, reader.grid_sensors_);
+        to_document_surface(p, reader.surface_origins_, scene);
+        if (reader.broken_.contains(entity_of(p.pointer))) continue;
         outcome.problems.push_back(std::move(p));
     }
     if (outcome.problems.empty()) outcome.scene = std::move(scene);
@@ -470,7 +568,7 @@ ParseOutcome load_scene_file(const std::filesystem::path& path, const ParseLimit
     if (static_cast<std::size_t>(in.gcount()) != size)
         return unreadable("the file changed while it was read");
     text.resize(static_cast<std::size_t>(size));
-    return parse_scene(text, limits);
+    return parse_scene(text, limits, path.parent_path());
 }
 
 std::string format_problem(const std::string& file, const Problem& problem) {

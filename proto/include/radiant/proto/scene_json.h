@@ -26,7 +26,10 @@ struct ParseOutcome {
 /// Parses and checks a scene document: JSON syntax, structure (types, required and unknown
 /// keys), then radiant::check_scene. Reports all problems found, each with the RFC 6901 pointer
 /// of the offending value ("" for the whole document). Never throws for bad input. Thread-safe.
-ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits = {});
+/// Model files (`obj_file`, `gltf_file`) are read relative to `scene_directory`; without one
+/// they are refused, so a service never reads local files on a client's behalf.
+ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits = {},
+                         const std::optional<std::filesystem::path>& scene_directory = {});
 
 /// Reads and parses a scene file. Files over `limits.max_bytes` are refused without being read;
 /// an unreadable file gives one problem with pointer "".

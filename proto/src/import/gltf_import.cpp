@@ -1,0 +1,315 @@
+#include "gltf_import.h"
+
+#include <tiny_gltf.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "gltf_axes.h"
+
+namespace radiant::proto {
+namespace {
+
+using Mat4 = std::array<double, 16>;  // column-major, as glTF stores it
+
+constexpr Mat4 kIdentity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+Mat4 multiply(const Mat4& a, const Mat4& b) {
+    Mat4 c{};
+    for (int col = 0; col < 4; ++col)
+        for (int row = 0; row < 4; ++row)
+            for (int k = 0; k < 4; ++k) c[col * 4 + row] += a[k * 4 + row] * b[col * 4 + k];
+    return c;
+}
+
+/// The node's local matrix: `matrix`, else translation · rotation · scale.
+Mat4 local_matrix(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) {
+        Mat4 m;
+        std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
+        return m;
+    }
+    Mat4 m = kIdentity;
+    if (node.rotation.size() == 4) {
+        const double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2],
+                     w = node.rotation[3];
+        m = {1 - 2 * (y * y + z * z),
+             2 * (x * y + z * w),
+             2 * (x * z - y * w),
+             0,
+             2 * (x * y - z * w),
+             1 - 2 * (x * x + z * z),
+             2 * (y * z + x * w),
+             0,
+             2 * (x * z + y * w),
+             2 * (y * z - x * w),
+             1 - 2 * (x * x + y * y),
+             0,
+             0,
+             0,
+             0,
+             1};
+    }
+    if (node.scale.size() == 3) {
+        for (int col = 0; col < 3; ++col)
+            for (int row = 0; row < 3; ++row) m[col * 4 + row] *= node.scale[col];
+    }
+    if (node.translation.size() == 3) {
+        for (int row = 0; row < 3; ++row) m[12 + row] = node.translation[row];
+    }
+    return m;
+}
+
+Vec3 transform(const Mat4& m, const Vec3& p) {
+    return {m[0] * p.x + m[4] * p.y + m[8] * p.z + m[12],
+            m[1] * p.x + m[5] * p.y + m[9] * p.z + m[13],
+            m[2] * p.x + m[6] * p.y + m[10] * p.z + m[14]};
+}
+
+double determinant3(const Mat4& m) {
+    return m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
+           m[8] * (m[1] * m[6] - m[5] * m[2]);
+}
+
+/// Refuses every file access: inline models must be self-contained.
+tinygltf::FsCallbacks no_files() {
+    tinygltf::FsCallbacks fs{};
+    fs.FileExists = [](const std::string&, void*) { return false; };
+    fs.ExpandFilePath = [](const std::string& path, void*) { return path; };
+    fs.ReadWholeFile = [](std::vector<unsigned char>*, std::string* err, const std::string& path,
+                          void*) {
+        if (err) *err += "an inline glTF cannot refer to the file \"" + path + "\"\n";
+        return false;
+    };
+    fs.WriteWholeFile = [](std::string*, const std::string&, const std::vector<unsigned char>&,
+                           void*) { return false; };
+    return fs;
+}
+
+class Reader {
+public:
+    Reader(const tinygltf::Model& model, double units_per_metre)
+        : model_(model), units_per_metre_(units_per_metre) {}
+
+    /// Empty on success, else the problem.
+    std::string read_scene(ImportedGeometry& out);
+
+private:
+    std::string node(int index, const Mat4& parent, ImportedGeometry& out);
+    std::string primitive(const tinygltf::Primitive& p, const Mat4& m, const std::string& where,
+                          ImportedGeometry& out);
+    /// Start of element k of an accessor after bounds checks, or an error.
+    std::string view(int accessor, int type, std::size_t element_size, const char* what,
+                     const unsigned char*& base, std::size_t& stride, std::size_t& count);
+
+    const tinygltf::Model& model_;
+    double units_per_metre_;
+    std::set<int> visited_;
+    std::map<int, std::size_t> part_of_material_;
+};
+
+std::string Reader::read_scene(ImportedGeometry& out) {
+    if (!model_.extensionsRequired.empty()) {
+        return "the glTF requires the extension " + model_.extensionsRequired.front() +
+               ", which is not supported";
+    }
+    if (model_.scenes.empty()) return "the glTF has no scene";
+    const auto scene = static_cast<std::size_t>(model_.defaultScene);
+    const tinygltf::Scene& s = model_.scenes[scene < model_.scenes.size() ? scene : 0];
+    for (const auto& m : model_.materials) {
+        const auto& f = m.pbrMetallicRoughness.baseColorFactor;
+        out.materials.push_back(
+            {m.name.empty() ? "material " + std::to_string(out.materials.size()) : m.name,
+             f.size() >= 3 ? Rgb{f[0], f[1], f[2]} : Rgb{1, 1, 1}});
+    }
+    for (const int n : s.nodes) {
+        if (std::string e = node(n, kIdentity, out); !e.empty()) return e;
+    }
+    if (out.parts.empty()) return "the glTF scene has no triangles";
+    return {};
+}
+
+std::string Reader::node(int index, const Mat4& parent, ImportedGeometry& out) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size())
+        return "node " + std::to_string(index) + " does not exist";
+    if (!visited_.insert(index).second)
+        return "node " + std::to_string(index) + " appears twice in the scene's node tree";
+    const tinygltf::Node& n = model_.nodes[static_cast<std::size_t>(index)];
+    const Mat4 m = multiply(parent, local_matrix(n));
+    if (n.mesh >= 0) {
+        if (static_cast<std::size_t>(n.mesh) >= model_.meshes.size())
+            return "node " + std::to_string(index) + " refers to a missing mesh";
+        const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(n.mesh)];
+        const std::string name =
+            "mesh \"" + (mesh.name.empty() ? std::to_string(n.mesh) : mesh.name) + "\"";
+        for (std::size_t k = 0; k < mesh.primitives.size(); ++k) {
+            const std::string where = name + " primitive " + std::to_string(k);
+            if (std::string e = primitive(mesh.primitives[k], m, where, out); !e.empty()) return e;
+        }
+    }
+    for (const int child : n.children) {
+        if (std::string e = node(child, m, out); !e.empty()) return e;
+    }
+    return {};
+}
+
+std::string Reader::view(int accessor, int type, std::size_t element_size, const char* what,
+                         const unsigned char*& base, std::size_t& stride, std::size_t& count) {
+    if (accessor < 0 || static_cast<std::size_t>(accessor) >= model_.accessors.size())
+        return std::string(what) + " accessor does not exist";
+    const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(accessor)];
+    if (a.sparse.isSparse) return std::string(what) + " accessor is sparse (not supported)";
+    if (a.type != type) return std::string(what) + " accessor has the wrong type";
+    if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= model_.bufferViews.size())
+        return std::string(what) + " accessor has no buffer view";
+    const tinygltf::BufferView& v = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+    if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= model_.buffers.size())
+        return std::string(what) + " buffer view has no buffer";
+    const std::vector<unsigned char>& data =
+        model_.buffers[static_cast<std::size_t>(v.buffer)].data;
+    stride = v.byteStride ? v.byteStride : element_size;
+    count = a.count;
+    const bool fits =
+        v.byteOffset <= data.size() && v.byteLength <= data.size() - v.byteOffset &&
+        stride >= element_size && a.byteOffset <= v.byteLength &&
+        (count == 0 || ((count - 1) <= (v.byteLength - a.byteOffset) / stride &&
+                        (count - 1) * stride + element_size <= v.byteLength - a.byteOffset));
+    if (!fits) return std::string(what) + " accessor runs past the end of its buffer";
+    base = data.data() + v.byteOffset + a.byteOffset;
+    return {};
+}
+
+std::string Reader::primitive(const tinygltf::Primitive& p, const Mat4& m, const std::string& where,
+                              ImportedGeometry& out) {
+    if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        p.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        return where + ": mode " + std::to_string(p.mode) + " is not a triangle mode";
+    }
+    const auto position = p.attributes.find("POSITION");
+    if (position == p.attributes.end()) return where + ": no POSITION attribute";
+    const unsigned char* base = nullptr;
+    std::size_t stride = 0, count = 0;
+    if (std::string e =
+            view(position->second, TINYGLTF_TYPE_VEC3, 12, "POSITION", base, stride, count);
+        !e.empty()) {
+        return where + ": " + e;
+    }
+    if (model_.accessors[static_cast<std::size_t>(position->second)].componentType !=
+        TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        return where + ": POSITION must be float";
+    }
+    std::vector<Vec3> points(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        float xyz[3];
+        std::memcpy(xyz, base + k * stride, sizeof xyz);
+        points[k] = from_gltf_axes(transform(m, {xyz[0], xyz[1], xyz[2]})) * units_per_metre_;
+    }
+    std::vector<std::uint32_t> indices;
+    if (p.indices >= 0) {
+        const auto& a = model_.accessors.size() > static_cast<std::size_t>(p.indices)
+                            ? model_.accessors[static_cast<std::size_t>(p.indices)]
+                            : tinygltf::Accessor{};
+        const std::size_t size = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                                 : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                                 : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                                             : 0;
+        if (size == 0) return where + ": indices must be unsigned integers";
+        std::size_t index_count = 0;
+        if (std::string e =
+                view(p.indices, TINYGLTF_TYPE_SCALAR, size, "indices", base, stride, index_count);
+            !e.empty()) {
+            return where + ": " + e;
+        }
+        indices.resize(index_count);
+        for (std::size_t k = 0; k < index_count; ++k) {
+            std::uint32_t value = 0;
+            if (size == 1) value = base[k * stride];
+            if (size == 2) {
+                std::uint16_t v16;
+                std::memcpy(&v16, base + k * stride, 2);
+                value = v16;
+            }
+            if (size == 4) std::memcpy(&value, base + k * stride, 4);
+            if (value >= count) {
+                return where + ": index " + std::to_string(value) + " is out of range (" +
+                       std::to_string(count) + " vertices)";
+            }
+            indices[k] = value;
+        }
+    } else {
+        indices.resize(count);
+        for (std::size_t k = 0; k < count; ++k) indices[k] = static_cast<std::uint32_t>(k);
+    }
+
+    const auto [slot, added] = part_of_material_.try_emplace(p.material, out.parts.size());
+    if (added) {
+        ImportedPart& part = out.parts.emplace_back();
+        if (p.material >= 0) {
+            if (static_cast<std::size_t>(p.material) >= out.materials.size())
+                return where + ": material " + std::to_string(p.material) + " does not exist";
+            part.material = static_cast<std::size_t>(p.material);
+        }
+    }
+    MeshGeometry& mesh = out.parts[slot->second].mesh;
+    const int offset = static_cast<int>(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), points.begin(), points.end());
+    const bool mirrored = determinant3(m) < 0;
+    auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        if (a == b || b == c || a == c) return;  // degenerate by construction (strip stitching)
+        if (mirrored) std::swap(b, c);
+        mesh.faces.push_back({offset + static_cast<int>(a), offset + static_cast<int>(b),
+                              offset + static_cast<int>(c)});
+    };
+    const std::size_t n = indices.size();
+    if (p.mode == TINYGLTF_MODE_TRIANGLES) {
+        if (n % 3 != 0) return where + ": the vertex count is not a multiple of 3";
+        for (std::size_t k = 0; k + 2 < n; k += 3) add(indices[k], indices[k + 1], indices[k + 2]);
+    } else if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        for (std::size_t k = 0; k + 2 < n; ++k) {
+            if (k % 2 == 0)
+                add(indices[k], indices[k + 1], indices[k + 2]);
+            else
+                add(indices[k + 1], indices[k], indices[k + 2]);
+        }
+    } else {
+        for (std::size_t k = 1; k + 1 < n; ++k) add(indices[0], indices[k], indices[k + 1]);
+    }
+    return {};
+}
+
+}  // namespace
+
+ImportOutcome import_gltf(const std::vector<unsigned char>& bytes, LengthUnit unit,
+                          const std::optional<std::filesystem::path>& directory) {
+    if (bytes.size() > std::numeric_limits<unsigned>::max()) return std::string("file too large");
+    tinygltf::TinyGLTF loader;
+    if (!directory) loader.SetFsCallbacks(no_files());
+    // Only geometry and material factors are used: images are neither decoded nor checked.
+    loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                             const unsigned char*, int, void*) { return true; },
+                          nullptr);
+    tinygltf::Model model;
+    std::string error, warning;
+    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const std::string base = directory ? directory->string() : "";
+    const auto size = static_cast<unsigned>(bytes.size());
+    const bool ok =
+        binary
+            ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(), size, base)
+            : loader.LoadASCIIFromString(&model, &error, &warning,
+                                         reinterpret_cast<const char*>(bytes.data()), size, base);
+    if (!ok) {
+        error = error.substr(0, error.find('\n'));
+        return error.empty() ? "not a glTF 2.0 file" : error;
+    }
+    ImportedGeometry out;
+    Reader reader(model, 1.0 / meters_per_unit(unit));
+    if (std::string e = reader.read_scene(out); !e.empty()) return e;
+    return out;
+}
+
+}  // namespace radiant::proto

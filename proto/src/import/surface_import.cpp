@@ -1,0 +1,113 @@
+#include "surface_import.h"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+
+#include "base64.h"
+#include "gltf_import.h"
+#include "obj_import.h"
+
+namespace radiant::proto {
+namespace {
+
+/// Reads a model file named relative to the scene file; returns the problem, if any.
+std::optional<std::string> read_model_file(const ImportRequest& r, std::filesystem::path& path,
+                                           std::string& bytes) {
+    if (!r.scene_directory) {
+        return "a file reference needs a scene file (radiant validate/solve SCENE.json); inline "
+               "the model instead";
+    }
+    path = *r.scene_directory / r.value;
+    auto problem = [&](const std::string& why) {
+        return "cannot read " + path.string() + ": " + why;
+    };
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) return problem(ec.message());
+    if (size > r.max_bytes)
+        return problem("over the limit of " + std::to_string(r.max_bytes) + " bytes");
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(static_cast<std::size_t>(size), '\0');
+    if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+        return problem("read error");
+    return std::nullopt;
+}
+
+ImportOutcome read_model(const ImportRequest& r) {
+    std::filesystem::path path;
+    std::string bytes;
+    switch (r.kind) {
+        case ImportKind::obj:
+            return import_obj(r.value, {r.mtl, std::nullopt});
+        case ImportKind::gltf: {
+            const auto glb = decode_base64(r.value);
+            if (!glb) return std::string("gltf must be a base64-encoded .glb file");
+            return import_gltf(*glb, r.unit, std::nullopt);
+        }
+        case ImportKind::obj_file: {
+            if (auto problem = read_model_file(r, path, bytes)) return *problem;
+            return import_obj(bytes, {r.mtl, path.parent_path()});
+        }
+        case ImportKind::gltf_file: {
+            if (auto problem = read_model_file(r, path, bytes)) return *problem;
+            return import_gltf({bytes.begin(), bytes.end()}, r.unit, path.parent_path());
+        }
+    }
+    return std::string("unknown import kind");
+}
+
+void append(MeshGeometry& to, const MeshGeometry& from) {
+    const int offset = static_cast<int>(to.vertices.size());
+    to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
+    for (std::vector<int> face : from.faces) {
+        for (int& v : face) v += offset;
+        to.faces.push_back(std::move(face));
+    }
+}
+
+}  // namespace
+
+std::variant<ImportedSurfaces, std::string> import_surface(const ImportRequest& request) {
+    ImportOutcome read = read_model(request);
+    if (auto* problem = std::get_if<std::string>(&read)) return *problem;
+    const ImportedGeometry& model = std::get<ImportedGeometry>(read);
+    ImportedSurfaces out;
+    if (request.material) {
+        Surface& s = out.surfaces.emplace_back();
+        s.name = request.name;
+        s.material = *request.material;
+        MeshGeometry mesh;
+        for (const ImportedPart& part : model.parts) append(mesh, part.mesh);
+        s.geometry = std::move(mesh);
+        return out;
+    }
+    std::set<std::string> names;
+    for (const ImportedPart& part : model.parts) {
+        if (!part.material) {
+            return "some faces have no material in the model; give the surface a \"material\"" +
+                   model.material_notes;
+        }
+        const ImportedMaterial& m = model.materials[*part.material];
+        for (const double r : m.reflectance) {
+            if (!(std::isfinite(r) && r >= 0 && r < 1)) {
+                return "material \"" + m.name + "\" has a reflectance of " + std::to_string(r) +
+                       ", outside [0, 1); give the surface a \"material\" to override it";
+            }
+        }
+        std::string name = request.name + "/" + m.name;
+        while (!names.insert(name).second) name += "'";
+        Material& material = out.materials.emplace_back();
+        material.name = name;
+        material.reflectance = m.reflectance;
+        material.rgb_reflectance =
+            m.reflectance[0] != m.reflectance[1] || m.reflectance[1] != m.reflectance[2];
+        Surface& s = out.surfaces.emplace_back();
+        s.name = model.parts.size() == 1 ? request.name : name;
+        s.material = name;
+        s.geometry = part.mesh;
+    }
+    return out;
+}
+
+}  // namespace radiant::proto
