@@ -243,7 +243,8 @@ TEST_P(CubeCeiling, FaceMeansWithinHalfPercent) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, CubeCeiling,
-                         ::testing::Values("direct", "jacobi", "gauss-seidel", "shooting", "auto"),
+                         ::testing::Values("hierarchical", "direct", "jacobi", "gauss-seidel",
+                                           "shooting", "auto"),
                          [](const auto& param_info) {
                              std::string s = param_info.param;
                              for (char& c : s) {

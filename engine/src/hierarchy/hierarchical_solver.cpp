@@ -121,8 +121,14 @@ HierarchicalOutcome HierarchicalSystem::solve(const SolverControl& control,
     for (std::size_t e = 0; e < tree_.size(); ++e) {
         if (!tree_[e].cluster && tree_[e].leaf()) total_area += tree_[e].area_m2;
     }
-    // Start from zero so that the first sweep's change bounds the whole solution.
-    for (std::size_t e = 0; e < tree_.size(); ++e) tree_[e].radiosity = {0, 0, 0};
+    // Start from the source term (emission and reflected luminaire light): the first sweep then
+    // gathers real light even where the operator is zero (black receivers).
+    for (std::size_t e = 0; e < tree_.size(); ++e) {
+        Element& x = tree_[e];
+        for (int c = 0; c < 3; ++c)
+            x.radiosity[c] = x.exitance[c] + x.reflectance[c] * x.luminaire_irradiance[c];
+    }
+    tree_.pull_up(channels_);
     const ContractionNorms q{q_inf_, 2.0};  // only the max-norm bound is known here
     auto last_report = std::chrono::steady_clock::now();
     auto last_snapshot = last_report;

@@ -21,7 +21,7 @@ constexpr double kRootEdgeFactor = 4;
 constexpr double kMinEdgeFactor = 0.25;
 // A link may leave this fraction of tolerance × the power leaving all surfaces uncertain
 // (RenderPark's default relative threshold is 1e-5 of the power at a 1 % tolerance).
-constexpr double kLinkPowerFraction = 1e-3;
+constexpr double kLinkPowerFraction = 2.5e-4;
 // A node may add this fraction of tolerance × the mean irradiance to a sensor unopened.
 constexpr double kGatherIrradianceFraction = 0.02;
 // Root patches beyond this would not fit the element budget.
