@@ -1,7 +1,9 @@
 #include "hierarchy/element_tree.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
+#include <numbers>
 
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
@@ -10,6 +12,7 @@
 #include "formfactor/quadrature.h"
 #include "formfactor/receiver_rule.h"
 #include "geometry/random.h"
+#include "solution/surface_summary.h"
 
 namespace radiant {
 namespace {
@@ -19,9 +22,17 @@ constexpr int kClusterSamples = 8;
 // Deeper quadtrees than this only chase rounding.
 constexpr int kMaxDepth = 14;
 
-double photometric(const Rgb& c, int channels) { return channels == 1 ? c[0] : luminance(c); }
-
 }  // namespace
+
+double sample_kernel(const Vec3& x, const Vec3& n, const SamplePoint& y) {
+    const Vec3 d = y.position - x;
+    const double r2 = length_squared(d);
+    if (!(r2 > 0)) return 0;
+    const double r = std::sqrt(r2);
+    const double cos_x = dot(n, d) / r, cos_y = -dot(y.normal, d) / r;
+    if (cos_x <= 0 || cos_y <= 0) return 0;
+    return y.weight * cos_x * cos_y / (std::numbers::pi * r2 + y.weight);
+}
 
 ElementTree::ElementTree(const PreparedScene& scene, const PatchMesh& patches,
                          const Visibility& visibility, double min_edge_m, std::uint64_t seed)
@@ -31,13 +42,11 @@ ElementTree::ElementTree(const PreparedScene& scene, const PatchMesh& patches,
       min_edge_m_(min_edge_m),
       seed_(seed) {
     elements_.reserve(4 * patches.size() + 16);
-    patch_element_.assign(patches.size(), -1);
     std::vector<int> roots;
     for (std::size_t i = 0; i < patches.size(); ++i) {
         const PatchGeometry& p = patches.patch(i);
         if (p.hidden) continue;
-        patch_element_[i] = add_surface(p.vertices, p.normal, static_cast<int>(i), -1, 0);
-        roots.push_back(patch_element_[i]);
+        roots.push_back(add_surface(p.vertices, p.normal, static_cast<int>(i), -1, 0));
     }
     if (roots.empty()) return;
     top_ = build_clusters(roots, 0, roots.size());

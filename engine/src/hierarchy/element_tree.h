@@ -22,6 +22,10 @@ struct SamplePoint {
     int root = -1;  ///< cluster samples: the root element (patch) the point lies on
 };
 
+/// Form factor from a point x (unit normal n) to the area a sample point stands for: the
+/// point-to-disk kernel A cosθ cosθ' / (πr² + A), bounded as r → 0; 0 when either faces away.
+double sample_kernel(const Vec3& x, const Vec3& n, const SamplePoint& y);
+
 struct Element {
     std::vector<Vec3> polygon;  ///< surface elements: convex, counter-clockwise about `normal`
     Vec3 normal;                ///< surface elements only
@@ -56,8 +60,6 @@ public:
     Element& operator[](std::size_t i) { return elements_[i]; }
     const Element& operator[](std::size_t i) const { return elements_[i]; }
     int top() const { return top_; }
-    /// Surface element of each patch (−1 for hidden patches).
-    const std::vector<int>& patch_element() const { return patch_element_; }
 
     bool can_subdivide(int e) const;
     /// Splits surface element `e` into its quadtree children (no-op if it has them); they start
@@ -90,7 +92,6 @@ private:
     double min_edge_m_;
     std::uint64_t seed_;
     std::vector<Element> elements_;
-    std::vector<int> patch_element_;
     int top_ = -1;
 };
 

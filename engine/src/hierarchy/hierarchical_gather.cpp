@@ -86,15 +86,10 @@ private:
         double g = 0;
         const double eps = visibility_.epsilon();
         for (const SamplePoint& y : e.samples) {
-            const Vec3 d = y.position - x;
-            const double r2 = length_squared(d);
-            if (!(r2 > 0)) continue;
-            const double r = std::sqrt(r2);
-            const double cos_x = dot(n, d) / r, cos_y = -dot(y.normal, d) / r;
-            if (cos_x <= 0 || cos_y <= 0) continue;
+            const double k = sample_kernel(x, n, y);
+            if (k <= 0) continue;
             ++rays;
-            if (!visibility_.visible(x + n * eps, y.position + y.normal * eps)) continue;
-            g += y.weight * cos_x * cos_y / (kPi * r2 + y.weight);
+            if (visibility_.visible(x + n * eps, y.position + y.normal * eps)) g += k;
         }
         return g;
     }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
@@ -14,8 +13,6 @@
 
 namespace radiant {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 struct Pair {
     int receiver;
@@ -166,13 +163,8 @@ private:
         int seen = 0, tried = 0;
         for (std::size_t m = 0; m < s.samples.size(); ++m) {
             const SamplePoint& y = s.samples[m];
-            const Vec3 d = y.position - x.position;
-            const double r2 = length_squared(d);
-            if (!(r2 > 0)) continue;
-            const double r = std::sqrt(r2);
-            const double cos_x = dot(x.normal, d) / r, cos_y = -dot(y.normal, d) / r;
-            if (cos_x <= 0 || cos_y <= 0) continue;
-            const double k = y.weight * cos_x * cos_y / (kPi * r2 + y.weight);
+            const double k = sample_kernel(x.position, x.normal, y);
+            if (k <= 0) continue;
             if (visibility) {
                 ++tried;
                 ++rays;

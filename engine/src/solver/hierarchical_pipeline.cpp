@@ -79,17 +79,8 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
 
     HierarchicalSystem system(tree, linked.links, enclosed, channels);
     report("solving", 0.6);
-    SolverControl control;
-    control.tolerance = options_.tolerance / 4;  // leave most of the budget to the links
-    control.deadline = deadline_;
-    control.cancel = cancel_;
-    control.progress = [&](std::size_t it, double err, double unshot) {
-        report("solving",
-               0.6 + 0.3 * std::clamp(std::log(std::max(err, 1e-300)) / std::log(control.tolerance),
-                                      0.0, 1.0),
-               it, err, unshot);
-    };
-    control.snapshot_interval = std::chrono::duration<double>(options_.snapshot_interval_seconds);
+    // Leave most of the budget to the links.
+    const SolverControl control = solving_control(options_.tolerance / 4);
     std::function<void()> publish;
     if (observer_) {
         publish = [&] {

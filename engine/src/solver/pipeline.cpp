@@ -87,6 +87,21 @@ void Pipeline::publish_snapshot(std::shared_ptr<const SolvedMesh> mesh, std::uin
     observer_->on_snapshot(snapshot);
 }
 
+SolverControl Pipeline::solving_control(double tolerance) const {
+    SolverControl control;
+    control.tolerance = tolerance;
+    control.deadline = deadline_;
+    control.cancel = cancel_;
+    control.progress = [this, tolerance](std::size_t it, double err, double unshot) {
+        report(
+            "solving",
+            0.6 + 0.3 * std::clamp(std::log(std::max(err, 1e-300)) / std::log(tolerance), 0.0, 1.0),
+            it, err, unshot);
+    };
+    control.snapshot_interval = std::chrono::duration<double>(options_.snapshot_interval_seconds);
+    return control;
+}
+
 void Pipeline::finish_stats(Result& result, const std::string& method, std::size_t patches,
                             std::size_t iterations, double error_estimate, double unshot_fraction,
                             int channels, bool stopped) const {
@@ -214,23 +229,12 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     bool stopped = interrupted.load();
     if (!stopped) {
         report("solving", 0.6);
-        SolverControl control;
-        control.tolerance = options_.tolerance / 4;  // leave most of the budget to meshing error
-        control.deadline = deadline_;
-        control.cancel = cancel_;
-        control.progress = [&](std::size_t it, double err, double unshot) {
-            report("solving",
-                   0.6 + 0.3 * std::clamp(
-                                   std::log(std::max(err, 1e-300)) / std::log(control.tolerance),
-                                   0.0, 1.0),
-                   it, err, unshot);
-        };
+        // Leave most of the budget to meshing error.
+        SolverControl control = solving_control(options_.tolerance / 4);
         if (observer_) {
             control.snapshot = [&](const std::array<std::vector<double>, 3>& radiosity) {
                 publish_snapshot(display_mesh(radiosity), 1, false);
             };
-            control.snapshot_interval =
-                std::chrono::duration<double>(options_.snapshot_interval_seconds);
         }
         outcome = solver->solve(system, control);
         stopped = !outcome.converged;

@@ -11,6 +11,7 @@
 
 #include "radiant/solve.h"
 #include "scene/prepared_scene.h"
+#include "solver/solver.h"
 #include "visibility/visibility.h"
 
 namespace radiant {
@@ -45,6 +46,9 @@ private:
     /// Hands the observer a snapshot of `mesh` (world coordinates, current radiosity).
     void publish_snapshot(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
                           bool final);
+    /// Control for the solving stage: `tolerance`, the deadline, cancellation, progress reports
+    /// and the snapshot interval of the options.
+    SolverControl solving_control(double tolerance) const;
     /// Fills the statistics every method reports alike.
     void finish_stats(Result& result, const std::string& method, std::size_t patches,
                       std::size_t iterations, double error_estimate, double unshot_fraction,
