@@ -115,10 +115,10 @@ Response get_result(ServiceContext& ctx, const Request& request, const std::stri
 Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id) {
     const auto job = ctx.jobs.cancel(id);
     if (!job) return unknown_job(request, id);
-    // 202 while a running solve is still stopping; 200 once the state is final.
-    return job_response(
-        request, job->status == JobStatus::running ? http::status::accepted : http::status::ok,
-        *job);
+    // 202 while a solve is still stopping (running, or just taken from the queue by a worker);
+    // 200 once the state is final.
+    const bool stopping = job->status == JobStatus::running || job->status == JobStatus::queued;
+    return job_response(request, stopping ? http::status::accepted : http::status::ok, *job);
 }
 
 Response list_jobs(ServiceContext& ctx, const Request& request, const Query& query) {

@@ -179,9 +179,6 @@ void JobQueue::work() {
             if (stopping_) return;
             job = queue_.front();
             queue_.pop_front();
-            const std::lock_guard job_lock(job->mutex);
-            job->record.status = JobStatus::running;
-            job->record.started = now_millis();
         }
         try {
             run(job);
@@ -198,20 +195,23 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     const std::string& id = job->id;
     const std::optional<JobRecord> stored = store_.find(id);
     if (!stored) return;
+    // The scene was checked on submission; parsing again keeps restarts on the same path. The
+    // job turns running together with its scene name, so a running job always has one.
+    const proto::ParseOutcome outcome = proto::parse_scene(stored->scene_json);
+    {
+        const std::lock_guard lock(job->mutex);
+        if (outcome.ok()) job->scene_name = outcome.scene->name;
+        job->record.status = JobStatus::running;
+        job->record.started = now_millis();
+    }
     store_.mark_running(id, job->snapshot().started);
     spdlog::info("job {} queued -> running", id);
 
-    // The scene was checked on submission; parsing again keeps restarts on the same path.
-    const proto::ParseOutcome outcome = proto::parse_scene(stored->scene_json);
     Result result;
     if (!outcome.ok()) {
         result.status = SolveStatus::failed;
         result.error = outcome.problems.front().pointer + ": " + outcome.problems.front().message;
     } else {
-        {
-            const std::lock_guard lock(job->mutex);
-            job->scene_name = outcome.scene->name;
-        }
         SolveOptions options = options_from(outcome.scene->settings);
         options.threads = options_.solve_threads;
         if (options_.job_seconds) {
