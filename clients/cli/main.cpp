@@ -9,6 +9,8 @@
 #include "http_client.h"
 #include "import_command.h"
 #include "job_document_command.h"
+#include "plan_command.h"
+#include "render_command.h"
 #include "solve_command.h"
 #include "submit_command.h"
 #include "validate_command.h"
@@ -22,6 +24,8 @@ int main(int argc, char** argv) {
         radiant::cli::add_solve_command(app, exit_code);
         radiant::cli::add_validate_command(app, exit_code);
         radiant::cli::add_import_command(app, exit_code);
+        radiant::cli::add_render_command(app, exit_code);
+        radiant::cli::add_plan_command(app, exit_code);
         radiant::cli::add_submit_command(app, exit_code);
         radiant::cli::add_job_document_command(app, exit_code, "status",
                                                "Print a radiantd job's state as JSON", "");

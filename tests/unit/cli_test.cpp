@@ -1,7 +1,6 @@
 // Runs the built `radiant` binary (cmake --build builds it with the tests) and checks the
 // contract's exit codes and problem lines.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -9,32 +8,16 @@
 #include <sstream>
 #include <string>
 
+#include "cli_run.h"
 #include "test_files.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-    int exit_code;
-    std::string out, err;
-};
+using radiant::test::CliRun;
 
-CliRun run(const std::string& args) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("radiant_cli_test_" + std::to_string(getpid()));
-    fs::create_directories(dir);
-    // Built with append: GCC 12 reports a false -Wrestrict on long operator+ chains.
-    std::string command = RADIANT_BIN_DIR;
-    command.append("/radiant ").append(args);
-    command.append(" > '").append((dir / "out").string()).append("'");
-    command.append(" 2> '").append((dir / "err").string()).append("'");
-    const int status = std::system(command.c_str());
-    CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, radiant::test::read_text(dir / "out"),
-             radiant::test::read_text(dir / "err")};
-    fs::remove_all(dir);
-    return r;
-}
+CliRun run(const std::string& args) { return radiant::test::run_cli(args); }
 
 std::string data(const std::string& relative) {
     return std::string(RADIANT_TEST_DATA) + "/" + relative;

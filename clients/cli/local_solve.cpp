@@ -1,0 +1,87 @@
+#include "local_solve.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <mutex>
+
+#include "exit_codes.h"
+#include "radiant/proto/scene_json.h"
+#include "radiant/solve.h"
+
+namespace radiant::cli {
+namespace {
+
+/// One progress line on stderr, rewritten in place with \r. Only used when stderr is a terminal,
+/// so logs and pipes never see control characters.
+class ProgressLine : public SolveObserver {
+public:
+    ~ProgressLine() override {
+        if (printed_) std::fputc('\n', stderr);
+    }
+
+    void on_progress(const Progress& p) override {
+        const std::lock_guard lock(mutex_);
+        // Throttled: solvers may report thousands of times a second.
+        const auto now = std::chrono::steady_clock::now();
+        if (printed_ && now - last_ < std::chrono::milliseconds(100) && p.fraction < 1) return;
+        last_ = now;
+        printed_ = true;
+        std::fprintf(stderr, "\r%-12s %5.1f%%  it %zu  err %.2e  %.1fs   ", p.stage.c_str(),
+                     100 * p.fraction, p.iterations, p.error_estimate, p.elapsed_seconds);
+        std::fflush(stderr);
+    }
+
+private:
+    std::mutex mutex_;
+    bool printed_ = false;
+    std::chrono::steady_clock::time_point last_;
+};
+
+}  // namespace
+
+void add_solve_flags(CLI::App& command, SolveFlags& flags) {
+    command.add_option("--tolerance", flags.tolerance, "target relative error, in (0, 1)")
+        ->check(CLI::Validator(
+            [](const std::string& s) -> std::string {
+                double t = 0;
+                const bool number = CLI::detail::lexical_cast(s, t);
+                return number && t > 0 && t < 1 ? "" : "tolerance must be in (0, 1)";
+            },
+            "(0,1)"));
+    command.add_option("--max-seconds", flags.max_seconds, "wall-clock budget")
+        ->check(CLI::PositiveNumber);
+    command.add_option("--threads", flags.threads, "worker threads, 0 for all cores")
+        ->check(CLI::NonNegativeNumber);
+    command.add_option("--method", flags.method, "solver")->check(CLI::IsMember(solver_names()));
+}
+
+LocalSolve solve_scene_file(const std::string& scene_file, const SolveFlags& flags,
+                            bool want_mesh) {
+    LocalSolve solved;
+    proto::ParseOutcome outcome = proto::load_scene_file(scene_file);
+    if (!outcome.ok()) {
+        for (const Problem& p : outcome.problems) {
+            std::cerr << proto::format_problem(scene_file, p) << '\n';
+        }
+        solved.exit_code = kExitBadInput;
+        return solved;
+    }
+    SolveOptions options = options_from(outcome.scene->settings);
+    if (flags.tolerance) options.tolerance = *flags.tolerance;
+    if (flags.max_seconds) options.max_seconds = *flags.max_seconds;
+    if (flags.threads) options.threads = *flags.threads;
+    if (flags.method) options.method = *flags.method;
+    options.want_mesh = want_mesh;
+    {
+        std::optional<ProgressLine> progress;
+        if (::isatty(STDERR_FILENO)) progress.emplace();
+        solved.result = solve(*outcome.scene, options, progress ? &*progress : nullptr);
+    }
+    solved.scene = std::move(outcome.scene);
+    return solved;
+}
+
+}  // namespace radiant::cli

@@ -1,0 +1,51 @@
+// Perspective pictures of a solved mesh: primary rays from a pinhole camera, values interpolated
+// over each triangle from its vertices (Gouraud), shown as tone-mapped luminance or false colour.
+#pragma once
+
+#include <vector>
+
+#include "picture/image.h"
+#include "radiant/result.h"
+
+namespace radiant::cli {
+
+struct Camera {
+    Vec3 eye;
+    Vec3 target;
+    Vec3 up{0, 0, 1};
+    double vertical_fov_degrees = 60;
+    int width = 800;
+    int height = 600;
+};
+
+/// A camera inside the mesh's bounding box: eye near one lower corner at 3/5 of the height,
+/// looking at the centre of the opposite half — a sensible first look into a room.
+Camera default_camera(const SolvedMesh& mesh);
+
+/// What the primary ray of every pixel hit (row-major, top row first).
+struct ViewHits {
+    struct Pixel {
+        int triangle = -1;              ///< −1: nothing
+        double w0 = 0, w1 = 0, w2 = 0;  ///< barycentric weights of the triangle's vertices
+        bool front = false;             ///< the triangle's front side faces the camera
+    };
+    int width = 0, height = 0;
+    std::vector<Pixel> pixels;
+};
+
+/// Throws std::invalid_argument for a degenerate camera (eye = target, up along the view).
+ViewHits cast_view(const SolvedMesh& mesh, const Camera& camera);
+
+/// The value at a hit pixel from per-vertex values; back sides read 0 (they do not reflect).
+double interpolate(const SolvedMesh& mesh, const std::vector<double>& vertex_value,
+                   const ViewHits::Pixel& pixel);
+
+/// Luminance picture: L = B/π per pixel, scaled so that `white_luminance` (cd/m²) is white;
+/// white_luminance ≤ 0 picks it automatically (the log-average maps to 18 % grey).
+Image luminance_view(const SolvedMesh& mesh, const ViewHits& hits, double white_luminance);
+
+/// False-colour picture of per-vertex values on [0, max] with a legend titled `unit`.
+Image false_colour_view(const SolvedMesh& mesh, const std::vector<double>& vertex_value,
+                        const ViewHits& hits, double max, const std::string& unit);
+
+}  // namespace radiant::cli

@@ -1,0 +1,73 @@
+#include "plan_command.h"
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "atomic_file.h"
+#include "exit_codes.h"
+#include "local_solve.h"
+#include "picture/sensor_plan.h"
+
+namespace radiant::cli {
+namespace {
+
+struct PlanArgs {
+    std::string scene;
+    std::string out;
+    std::string sensors;  ///< the set to draw; empty = the first
+    SolveFlags flags;
+    double max_lux = 0;
+    int size = 800;
+};
+
+int run_plan(const PlanArgs& args) {
+    LocalSolve solved = solve_scene_file(args.scene, args.flags, false);
+    if (solved.exit_code != kExitOk) return solved.exit_code;
+    const Result& result = solved.result;
+    if (result.status == SolveStatus::failed) {
+        std::cerr << "radiant: solve failed: " << result.error << '\n';
+        return kExitFailure;
+    }
+    const std::vector<SensorSet>& sets = solved.scene->sensors;
+    const auto set = std::find_if(sets.begin(), sets.end(), [&](const SensorSet& s) {
+        return args.sensors.empty() || s.name == args.sensors;
+    });
+    if (set == sets.end()) {
+        std::cerr << args.scene << ": "
+                  << (args.sensors.empty() ? "the scene has no sensors"
+                                           : "no sensor set named \"" + args.sensors + "\"")
+                  << '\n';
+        return kExitBadInput;
+    }
+    const auto index = static_cast<std::size_t>(set - sets.begin());
+    SensorPlan plan;
+    plan.title = result.scene + " - " + set->name;
+    plan.points = set->points;
+    plan.normal = set->normal;
+    plan.lux = result.sensors[index].illuminance;
+    plan.max_lux = args.max_lux;
+    write_file_atomically(args.out, draw_sensor_plan(plan, args.size).png());
+    return kExitOk;
+}
+
+}  // namespace
+
+void add_plan_command(CLI::App& app, int& exit_code) {
+    auto* cmd = app.add_subcommand(
+        "plan", "Solve a scene and write a top-down false-colour lux map of a sensor set (PNG)");
+    auto args = std::make_shared<PlanArgs>();
+    cmd->add_option("scene", args->scene, "radiant-scene/1 JSON file")->required();
+    cmd->add_option("--out", args->out, "the PNG file to write")->required();
+    cmd->add_option("--sensors", args->sensors, "name of the sensor set (default: the first)");
+    add_solve_flags(*cmd, args->flags);
+    cmd->add_option("--max-lux", args->max_lux, "top of the colour scale (default: automatic)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--size", args->size, "pixels along the longer side of the map")
+        ->check(CLI::Range(100, 8192))
+        ->capture_default_str();
+    cmd->callback([args, &exit_code] { exit_code = run_plan(*args); });
+}
+
+}  // namespace radiant::cli

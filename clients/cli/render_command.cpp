@@ -1,0 +1,111 @@
+#include "render_command.h"
+
+#include <algorithm>
+#include <array>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "atomic_file.h"
+#include "exit_codes.h"
+#include "local_solve.h"
+#include "picture/false_colour.h"
+#include "picture/room_view.h"
+#include "picture/vertex_illuminance.h"
+
+namespace radiant::cli {
+namespace {
+
+struct RenderArgs {
+    std::string scene;
+    std::string out;
+    SolveFlags flags;
+    std::optional<std::array<double, 3>> eye, target;
+    std::array<double, 3> up{0, 0, 1};
+    double fov = 60;
+    int width = 800, height = 600;
+    double exposure = 0;  ///< cd/m² shown as white; 0 = automatic
+    bool falsecolor = false;
+    double max_lux = 0;  ///< top of the false-colour scale; 0 = the largest value, rounded up
+};
+
+Vec3 vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
+/// Scene-unit coordinates from the command line → the metres of the solved mesh.
+Vec3 to_metres(const std::array<double, 3>& a, const Scene& scene) {
+    return vec(a) * meters_per_unit(scene.units);
+}
+
+int run_render(const RenderArgs& args) {
+    LocalSolve solved = solve_scene_file(args.scene, args.flags, true);
+    if (solved.exit_code != kExitOk) return solved.exit_code;
+    const Result& result = solved.result;
+    if (result.status == SolveStatus::failed || !result.mesh) {
+        std::cerr << "radiant: solve failed: " << result.error << '\n';
+        return kExitFailure;
+    }
+    const SolvedMesh& mesh = *result.mesh;
+    Camera camera = default_camera(mesh);
+    if (args.eye) camera.eye = to_metres(*args.eye, *solved.scene);
+    if (args.target) camera.target = to_metres(*args.target, *solved.scene);
+    camera.up = vec(args.up);
+    camera.vertical_fov_degrees = args.fov;
+    camera.width = args.width;
+    camera.height = args.height;
+    ViewHits hits;
+    try {
+        hits = cast_view(mesh, camera);
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "radiant: " << e.what() << '\n';
+        return kExitBadInput;
+    }
+    Image image(1, 1, {});
+    if (args.falsecolor) {
+        const std::vector<double> lux = vertex_illuminance(result, *solved.scene);
+        double max = args.max_lux;
+        if (!(max > 0)) max = round_scale_max(*std::max_element(lux.begin(), lux.end()));
+        image = false_colour_view(mesh, lux, hits, max, "lux");
+    } else {
+        image = luminance_view(mesh, hits, args.exposure);
+    }
+    write_file_atomically(args.out, image.png());
+    return kExitOk;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, int& exit_code) {
+    auto* cmd = app.add_subcommand(
+        "render", "Solve a scene and write a perspective picture of it as PNG (--falsecolor: lux)");
+    auto args = std::make_shared<RenderArgs>();
+    cmd->add_option("scene", args->scene, "radiant-scene/1 JSON file")->required();
+    cmd->add_option("--out", args->out, "the PNG file to write")->required();
+    add_solve_flags(*cmd, args->flags);
+    cmd->add_option("--eye", args->eye,
+                    "camera position X Y Z in scene units (default: inside "
+                    "the bounding box, near a lower corner)");
+    cmd->add_option("--target", args->target, "point looked at, X Y Z in scene units");
+    cmd->add_option("--up", args->up, "up direction X Y Z")->capture_default_str();
+    cmd->add_option("--fov", args->fov, "vertical field of view, degrees")
+        ->check(CLI::Range(1.0, 179.0))
+        ->capture_default_str();
+    cmd->add_option("--width", args->width, "pixels")
+        ->check(CLI::Range(16, 8192))
+        ->capture_default_str();
+    cmd->add_option("--height", args->height, "pixels")
+        ->check(CLI::Range(16, 8192))
+        ->capture_default_str();
+    cmd->add_option("--exposure", args->exposure,
+                    "luminance (cd/m²) shown as white; default: automatic")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--falsecolor", args->falsecolor,
+                  "colour by illuminance (lux) with a legend instead of luminance");
+    cmd->add_option("--max-lux", args->max_lux, "top of the false-colour scale")
+        ->check(CLI::PositiveNumber);
+    cmd->callback([args, &exit_code] { exit_code = run_render(*args); });
+}
+
+}  // namespace radiant::cli

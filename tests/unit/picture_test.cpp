@@ -1,0 +1,187 @@
+// `radiant render` and `radiant plan` on a room lit by one downlight in the middle of the
+// ceiling: the PNGs are decoded and checked for what they claim to show — the brightest spot
+// under the lamp, the room's symmetry, the legend.
+#include <gtest/gtest.h>
+#include <stb_image.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "cli_run.h"
+#include "test_files.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Picture {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+
+    const unsigned char* at(int x, int y) const {
+        return &rgb[3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                         static_cast<std::size_t>(x))];
+    }
+    double grey(int x, int y) const {
+        const unsigned char* p = at(x, y);
+        return (p[0] + p[1] + p[2]) / 3.0;
+    }
+};
+
+/// Hue in degrees (0 red … 240 blue): the false-colour ramp runs from blue to red, so a smaller
+/// hue means more lux.
+double hue(const unsigned char* p) {
+    const double r = p[0], g = p[1], b = p[2];
+    const double hi = std::max({r, g, b}), lo = std::min({r, g, b});
+    if (hi - lo < 1) return -1;
+    double h = hi == r   ? std::fmod((g - b) / (hi - lo), 6.0)
+               : hi == g ? (b - r) / (hi - lo) + 2
+                         : (r - g) / (hi - lo) + 4;
+    h *= 60;
+    return h < 0 ? h + 360 : h;
+}
+
+/// sRGB-encoded grey level → linear luminance relative to white.
+double linear(double grey) {
+    const double v = grey / 255;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+bool saturated(const unsigned char* p) {
+    return std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]}) > 40;
+}
+
+class Pictures : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("radiant_picture_test_" + std::to_string(getpid()));
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    /// Runs the CLI writing `name` and decodes it; fails the test when the CLI did.
+    Picture make(const std::string& command, const std::string& name) {
+        const fs::path png = dir_ / name;
+        const radiant::test::CliRun r =
+            radiant::test::run_cli(command + " '" + scene_ + "' --out '" + png.string() + "'");
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        const std::string bytes = radiant::test::read_text(png);
+        Picture picture;
+        int channels = 0;
+        std::unique_ptr<unsigned char, decltype(&stbi_image_free)> data(
+            stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
+                                  static_cast<int>(bytes.size()), &picture.width, &picture.height,
+                                  &channels, 3),
+            &stbi_image_free);
+        EXPECT_TRUE(data) << "not a PNG: " << png;
+        if (data) {
+            picture.rgb.assign(data.get(), data.get() + 3 * picture.width * picture.height);
+        }
+        return picture;
+    }
+
+    const std::string scene_ = std::string(RADIANT_TEST_DATA) + "/pictures/lamp-room.json";
+    fs::path dir_;
+};
+
+// Looking straight down from just below the lamp: the floor fills the view.
+const std::string kDownView =
+    "render --eye 2 2 2.4 --target 2 2 0 --up 0 1 0 --fov 60 --width 201 --height 151";
+
+TEST_F(Pictures, LuminanceViewIsBrightestUnderTheLampAndSymmetric) {
+    const Picture p = make(kDownView, "down.png");
+    ASSERT_EQ(p.width, 201);
+    ASSERT_EQ(p.height, 151);
+    int best_x = 0, best_y = 0;
+    double mirror_difference = 0;
+    for (int y = 0; y < p.height; ++y) {
+        for (int x = 0; x < p.width; ++x) {
+            if (p.grey(x, y) > p.grey(best_x, best_y)) best_x = x, best_y = y;
+            mirror_difference += std::abs(p.grey(x, y) - p.grey(p.width - 1 - x, y)) +
+                                 std::abs(p.grey(x, y) - p.grey(x, p.height - 1 - y));
+        }
+    }
+    EXPECT_NEAR(best_x, 100, 12);
+    EXPECT_NEAR(best_y, 75, 12);
+    EXPECT_LT(mirror_difference / (2.0 * p.width * p.height), 2.0);  // grey levels
+    // Light falls off towards the edges of the view: the downlight's direct part as cos⁴ (0.66
+    // at the top edge, 1.39 m off-centre), diluted by the nearly even reflected light.
+    const double edge_ratio = linear(p.grey(100, 0)) / linear(p.grey(100, 75));
+    EXPECT_GT(edge_ratio, 0.6);
+    EXPECT_LT(edge_ratio, 0.9);
+}
+
+TEST_F(Pictures, FalseColourViewHasLegendAndHottestColourUnderTheLamp) {
+    const Picture p = make(kDownView + " --falsecolor", "false.png");
+    ASSERT_GT(p.width, 201);  // the legend sits to the right of the view
+    ASSERT_EQ(p.height, 151);
+    EXPECT_LT(hue(p.at(100, 75)), hue(p.at(3, 3)));
+    EXPECT_LT(hue(p.at(100, 75)), hue(p.at(197, 147)));
+    int red = 0, blue = 0;
+    for (int y = 0; y < p.height; ++y) {
+        for (int x = 201; x < p.width; ++x) {
+            if (!saturated(p.at(x, y))) continue;
+            const double h = hue(p.at(x, y));
+            red += h < 20 || h > 340;
+            blue += h > 200 && h < 280;
+        }
+    }
+    EXPECT_GT(red, 20);   // the top of the legend bar
+    EXPECT_GT(blue, 20);  // its bottom
+}
+
+TEST_F(Pictures, PlanMapsTheGridSymmetricallyWithTheHottestCellsInTheMiddle) {
+    const Picture p = make("plan --size 400", "plan.png");
+    // The map is the first run of columns holding false colours; the legend comes after a gap.
+    const auto coloured_column = [&](int x) {
+        for (int y = 0; y < p.height; ++y) {
+            if (saturated(p.at(x, y))) return true;
+        }
+        return false;
+    };
+    int x0 = 0;
+    while (x0 < p.width && !coloured_column(x0)) ++x0;
+    int x1 = x0;
+    while (x1 + 1 < p.width && coloured_column(x1 + 1)) ++x1;
+    int y0 = p.height, y1 = -1;
+    for (int y = 0; y < p.height; ++y) {
+        if (saturated(p.at(x0 + (x1 - x0) / 2, y))) y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+    ASSERT_GT(x1 - x0, 390);           // --size 400
+    ASSERT_NEAR(x1 - x0, y1 - y0, 3);  // a square room gives a square map
+    const double cell = (x1 - x0 + 1) / 8.0;
+    // Sample each cell away from its centred label, and its mirror image across both axes.
+    const auto sample = [&](double i, double j) {
+        return p.at(x0 + static_cast<int>(i * cell), y0 + static_cast<int>(j * cell));
+    };
+    for (int i = 0; i < 8; ++i) {
+        for (int j = 0; j < 8; ++j) {
+            const double h = hue(sample(i + 0.2, j + 0.2));
+            EXPECT_NEAR(h, hue(sample(8 - i - 0.2, j + 0.2)), 6) << i << "," << j;
+            EXPECT_NEAR(h, hue(sample(i + 0.2, 8 - j - 0.2)), 6) << i << "," << j;
+        }
+    }
+    EXPECT_LT(hue(sample(3.2, 3.2)), hue(sample(0.2, 0.2)) - 30);
+}
+
+TEST_F(Pictures, ACameraLookingAtItsOwnEyeIsRefused) {
+    const radiant::test::CliRun r =
+        radiant::test::run_cli("render '" + scene_ + "' --eye 1 1 1 --target 1 1 1 --out '" +
+                               (dir_ / "x.png").string() + "'");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("camera"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+TEST_F(Pictures, PlanOfAnUnknownSensorSetIsRefused) {
+    const radiant::test::CliRun r = radiant::test::run_cli(
+        "plan '" + scene_ + "' --sensors nope --out '" + (dir_ / "x.png").string() + "'");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("nope"), std::string::npos) << r.err;
+}
+
+}  // namespace
