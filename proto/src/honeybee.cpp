@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 
+#include "import/polygon_with_holes.h"
 #include "json_text.h"
 #include "radiant/proto/scene_json.h"
 
@@ -76,6 +78,7 @@ private:
     void modifiers(const Json& model);
     std::string material(const Json& object, const Default& fallback);
     void face3d(const Json& object, const Ptr& p, const Default& fallback, bool reverse);
+    static std::optional<Json> mesh_with_holes(const Json& polygon, const std::vector<Json>& holes);
     void room(const Json& room, const Ptr& p);
     void shades(const Json& object, const Ptr& p, const char* key);
     void sensor_grids(const Json& grids, const Ptr& p);
@@ -198,20 +201,68 @@ void Converter::face3d(const Json& object, const Ptr& p, const Default& fallback
         report(p / "geometry" / "boundary", "a Face3D needs a boundary of at least 3 points");
         return;
     }
-    if (const Json* holes = get(*geometry, "holes"); holes && !holes->empty()) {
-        report(p / "geometry" / "holes", "faces with holes are not supported");
-        return;
-    }
+    const Ptr at = p / "geometry";
+    const std::size_t problems_before = problems_.size();
     Json polygon = Json::array();
     for (std::size_t k = 0; k < boundary->size(); ++k) {
-        if (auto v = point((*boundary)[k], p / "geometry" / "boundary" / k)) polygon.push_back(*v);
+        if (auto v = point((*boundary)[k], at / "boundary" / k)) polygon.push_back(*v);
     }
-    if (polygon.size() != boundary->size()) return;
+    std::vector<Json> holes;
+    const Json* hole_list = array(*geometry, at, "holes");
+    for (std::size_t h = 0; hole_list && h < hole_list->size(); ++h) {
+        const Json& ring = (*hole_list)[h];
+        if (!ring.is_array() || ring.size() < 3) {
+            report(at / "holes" / h, "a hole needs at least 3 points");
+            continue;
+        }
+        Json hole = Json::array();
+        for (std::size_t k = 0; k < ring.size(); ++k) {
+            if (auto v = point(ring[k], at / "holes" / h / k)) hole.push_back(*v);
+        }
+        holes.push_back(std::move(hole));
+    }
+    if (problems_.size() != problems_before) return;
     if (reverse) std::reverse(polygon.begin(), polygon.end());
-    surfaces_.push_back({{"name", name_of(object, p.to_string())},
-                         {"material", material(object, fallback)},
-                         {"polygon", polygon}});
+    Json surface = {{"name", name_of(object, p.to_string())},
+                    {"material", material(object, fallback)}};
+    if (holes.empty()) {
+        surface["polygon"] = polygon;
+    } else if (auto mesh = mesh_with_holes(polygon, holes)) {
+        surface["mesh"] = std::move(*mesh);
+    } else {
+        report(at / "holes", "the holes do not lie inside the boundary as separate rings");
+        return;
+    }
+    surfaces_.push_back(std::move(surface));
     surface_pointers_.push_back(p.to_string());
+}
+
+/// A face with holes as a `mesh` surface: its boundary and hole vertices, triangulated.
+std::optional<Json> Converter::mesh_with_holes(const Json& polygon,
+                                               const std::vector<Json>& holes) {
+    const auto vec = [](const Json& v) {
+        return Vec3{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+    };
+    std::vector<Vec3> outer;
+    Json vertices = polygon;
+    for (const Json& v : polygon) outer.push_back(vec(v));
+    std::vector<std::vector<Vec3>> rings;
+    for (const Json& hole : holes) {
+        rings.emplace_back();
+        for (const Json& v : hole) {
+            rings.back().push_back(vec(v));
+            vertices.push_back(v);
+        }
+    }
+    const auto triangles = triangulate_with_holes(outer, rings);
+    if (!triangles) return std::nullopt;
+    Json faces = Json::array();
+    for (const auto& t : *triangles) {
+        Json face = Json::array();
+        for (const int index : t) face.push_back(static_cast<std::uint64_t>(index));
+        faces.push_back(std::move(face));
+    }
+    return Json{{"vertices", std::move(vertices)}, {"faces", std::move(faces)}};
 }
 
 void Converter::room(const Json& room, const Ptr& p) {

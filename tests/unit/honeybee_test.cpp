@@ -105,6 +105,42 @@ TEST(Honeybee, AirBoundariesLetLightThroughAndGridsSplitByDirection) {
     EXPECT_EQ(scene["sensors"][1]["points"].size(), 1u);
 }
 
+TEST(Honeybee, FacesWithHolesBecomeMeshesThatLetLightOut) {
+    Json hb = model();
+    // A skylight opening (listed like the boundary) and a triangular one (listed the other way).
+    hb["rooms"][0]["faces"][1]["geometry"]["holes"] =
+        Json::array({Json::array({{1, 1, 3}, {2, 1, 3}, {2, 2, 3}, {1, 2, 3}}),
+                     Json::array({{2.5, 2.5, 3}, {2.5, 3, 3}, {3, 3, 3}})});
+    Json scene = converted(hb);
+    const Json* ceiling = surface(scene, "ceiling");
+    ASSERT_NE(ceiling, nullptr);
+    ASSERT_TRUE(ceiling->contains("mesh"));
+    const auto vertices = (*ceiling)["mesh"]["vertices"].get<std::vector<std::array<double, 3>>>();
+    double area = 0;
+    for (const auto& face : (*ceiling)["mesh"]["faces"]) {
+        const auto v = [&](int k) {
+            const auto& p = vertices[face[static_cast<std::size_t>(k)].get<std::size_t>()];
+            return Vec3{p[0], p[1], p[2]};
+        };
+        const Vec3 n = cross(v(1) - v(0), v(2) - v(0));
+        EXPECT_LT(n.z, 0) << "every piece faces down into the room";
+        area += length(n) / 2;
+    }
+    EXPECT_NEAR(area, 16 - 1 - 0.125, 1e-12);
+
+    scene["luminaires"] =
+        Json::array({{{"name", "bulb"}, {"position", {2, 2, 1.5}}, {"flux", 1000}}});
+    const ParseOutcome parsed = parse_scene(scene.dump());
+    ASSERT_TRUE(parsed.ok()) << parsed.problems[0].pointer << ": " << parsed.problems[0].message;
+    SolveOptions options;
+    options.tolerance = 0.05;
+    const Result result = solve(*parsed.scene, options);
+    ASSERT_NE(result.status, SolveStatus::failed) << result.error;
+    EXPECT_NEAR(testing::find_surface(result, "ceiling")->area_m2, 14.875, 1e-9);
+    // Light leaves through the openings (and the window's glass): not all of it is absorbed.
+    EXPECT_LT(result.stats.absorbed_flux_lm, 0.97 * result.stats.emitted_flux_lm);
+}
+
 TEST(Honeybee, UnitsCarryOver) {
     Json hb = model();
     hb["units"] = "Millimeters";
@@ -127,8 +163,18 @@ TEST(Honeybee, MalformedModelsAreRefusedWithTheirPointer) {
         pointers_after("/properties/radiance/sensor_grids/0/sensors/3/dir", Json::array({0, 0})),
         V{"/properties/radiance/sensor_grids/0/sensors/3/dir"});
     EXPECT_EQ(pointers_after("/rooms/0/faces/1/geometry/holes",
-                             Json::array({Json::array({{1, 1, 3}, {2, 1, 3}, {2, 2, 3}})})),
-              V{"/rooms/0/faces/1/geometry/holes"});
+                             Json::array({Json::array({{1, 1, 3}, {2, 1, 3}})})),
+              V{"/rooms/0/faces/1/geometry/holes/0"});
+    EXPECT_EQ(pointers_after("/rooms/0/faces/1/geometry/holes",
+                             Json::array({Json::array({{3, 3, 3}, {5, 3, 3}, {5, 5, 3}})})),
+              V{"/rooms/0/faces/1/geometry/holes"})
+        << "a hole reaching outside the boundary";
+    EXPECT_EQ(
+        pointers_after("/rooms/0/faces/1/geometry/holes",
+                       Json::array({Json::array({{1, 1, 3}, {2, 1, 3}, {2, 2, 3}}),
+                                    Json::array({{1.5, 1.2, 3}, {2.5, 1.2, 3}, {2.5, 2, 3}})})),
+        V{"/rooms/0/faces/1/geometry/holes"})
+        << "overlapping holes";
     EXPECT_EQ(pointers_after("/rooms/0/faces/1/geometry/boundary/2", Json::array({4, 4, 9})),
               V{"/rooms/0/faces/1/geometry/boundary"})
         << "a non-planar face, found by the scene's own checks";
