@@ -1,19 +1,16 @@
-// radiant-bench: runs each solver on each validation scene and prints how fast and how accurate
-// it is, as a Markdown table (and optionally CSV).
-//
-// Scenes: tests/data/scenes/<name>.json for every entry of expected.json, plus
-// tests/data/radiance/room-s2.json against its RADIANCE reference CSV. "True error" is the largest
-// relative error over a scene's checks: surface values |got/want − 1|; energy balance
-// |absorbed/emitted − 1|; sensor-max checks the ratio dark max / lit mean itself (exact answer 0);
-// room-s2 the normalised RMS error sqrt(mean((E − Eref)²)) / mean(Eref) of the 81 work-plane
-// points.
+// radiant-bench: speed against error. Runs each solver at several tolerances on a suite of
+// scenes — the validation scenes (exact answers), the RADIANCE room, and a generated furnished
+// office at 1, 4, 16 and 64 times the furniture (against a converged hierarchical reference) —
+// each case in its own forked child so its peak memory is its own. Prints a Markdown table and
+// writes it as Markdown and CSV, plots error against time with gnuplot, and summarises the
+// scaling series and the time each method needs to reach a target error.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,263 +18,291 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bench_table.h"
+#include "isolated_run.h"
+#include "office_scene.h"
 #include "radiant/proto/scene_json.h"
 #include "radiant/solve.h"
+#include "reference_answer.h"
+#include "reference_cache.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-using radiant::Result;
+using namespace radiant;
+using namespace radiant::bench;
 
-constexpr const char* kRoomScene = "room-s2";
+constexpr const char* kRadianceRoom = "room-s2";
+const std::vector<int> kScalingUnits{1, 4, 16, 64};
 
-struct Row {
-    std::string scene, method, status, worst;
-    double tolerance = 0, seconds = 0, error_estimate = 0, true_error = 0;
-    std::uint64_t rays = 0;
-    std::size_t patches = 0, iterations = 0;
+std::string office_name(int units) { return "office-x" + std::to_string(units); }
+
+struct BenchScene {
+    Scene scene;
+    ReferenceAnswer reference;  ///< for generated scenes, from a converged reference solve
 };
 
-const radiant::SurfaceResult* find_surface(const Result& r, const std::string& name) {
-    for (const auto& s : r.surfaces) {
-        if (s.name == name) return &s;
-    }
-    return nullptr;
-}
-
-const radiant::SensorResult* find_sensor(const Result& r, const std::string& name) {
-    for (const auto& s : r.sensors) {
-        if (s.name == name) return &s;
-    }
-    return nullptr;
-}
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-struct TrueError {
-    double value = 0;
-    std::string worst;  ///< which check gave `value`
-};
-
-// Largest error over a scene's expected.json checks; NaN when a check cannot be evaluated.
-TrueError checks_error(const Result& result, const nlohmann::json& checks) {
-    TrueError out;
-    for (const auto& check : checks) {
-        const std::string what = check.at("what");
-        double err = kNaN;
-        std::string label = what;
-        if (what == "surface") {
-            label = check.at("surface").get<std::string>() + " " +
-                    (check.at("field") == "average_irradiance" ? "H" : "B");
-            if (const auto* s = find_surface(result, check.at("surface"))) {
-                const double got = check.at("field") == "average_irradiance" ? s->average_irradiance
-                                                                             : s->average_radiosity;
-                err = std::abs(got / check.at("value").get<double>() - 1.0);
-            }
-        } else if (what == "energy") {
-            err = std::abs(result.stats.absorbed_flux_lm / result.stats.emitted_flux_lm - 1.0);
-        } else if (what == "sensor-max") {
-            label = check.at("sensor").get<std::string>() + " max/lit";
-            const auto* dark = find_sensor(result, check.at("sensor"));
-            const auto* lit = find_sensor(result, check.at("max_relative_to"));
-            if (dark && lit && lit->average > 0) err = std::abs(dark->max / lit->average);
-        }
-        if (!(err <= std::numeric_limits<double>::max())) return {kNaN, label};
-        if (err >= out.value) out = {err, label};
-    }
-    return out;
-}
-
-std::vector<double> read_reference(const fs::path& csv) {
+std::vector<double> read_radiance_csv(const fs::path& csv) {
     std::ifstream in(csv);
     std::string line;
     std::getline(in, line);  // header x,y,z,irradiance
     std::vector<double> values;
     while (std::getline(in, line)) {
-        if (line.empty()) continue;
-        const auto comma = line.rfind(',');
-        values.push_back(std::stod(line.substr(comma + 1)));
+        if (!line.empty()) values.push_back(std::stod(line.substr(line.rfind(',') + 1)));
     }
     return values;
 }
 
-TrueError room_error(const Result& result, const std::vector<double>& reference) {
-    const auto* plane = find_sensor(result, "workplane");
-    if (!plane || plane->illuminance.size() != reference.size() || reference.empty()) {
-        return {kNaN, "workplane nRMS"};
+std::optional<Scene> load(const fs::path& file) {
+    auto outcome = proto::load_scene_file(file);
+    for (const auto& p : outcome.problems) {
+        std::cerr << proto::format_problem(file.string(), p) << '\n';
     }
-    double sq = 0, mean = 0;
-    for (std::size_t i = 0; i < reference.size(); ++i) {
-        const double d = plane->illuminance[i] - reference[i];
-        sq += d * d;
-        mean += reference[i];
+    return outcome.scene;
+}
+
+// A solve in a child: the row's fields as JSON (the child's memory and time are its own).
+nlohmann::json solve_case(const Scene& scene, const SolveOptions& options,
+                          const ReferenceAnswer& reference) {
+    const Result result = solve(scene, options);
+    const RelativeError error = relative_error(result, reference);
+    const auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nullptr; };
+    return {{"status", to_string(result.status)},
+            {"error", result.error},
+            {"seconds", result.stats.seconds},
+            {"rays", result.stats.rays},
+            {"elements", result.stats.elements},
+            {"links", result.stats.links},
+            {"rms", number(error.rms)},
+            {"max", number(error.max)},
+            {"estimate", number(result.stats.error_estimate)},
+            {"sensor", result.sensors.empty() ? nlohmann::json(nullptr)
+                                              : nlohmann::json(result.sensors[0].illuminance)}};
+}
+
+double number_or_nan(const nlohmann::json& j) {
+    return j.is_number() ? j.get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
+
+unsigned watchdog_for(double max_seconds) {
+    // The cap stops the solve; meshing and sensors after it get as long again plus a minute.
+    return static_cast<unsigned>(std::ceil(2 * max_seconds + 60));
+}
+
+// The converged answer of a generated scene: from the cache, or a hierarchical solve at
+// `tolerance` (in a child, so its memory does not inflate the later cases' peaks).
+bool prepare_reference(BenchScene& bench, double tolerance, double max_seconds, int threads,
+                       const ReferenceCache& cache) {
+    auto cached = cache.find(bench.scene, tolerance);
+    if (!cached) {
+        std::cerr << "radiant-bench: computing the reference of " << bench.scene.name
+                  << " (hierarchical, tolerance " << tolerance << ")\n";
+        SolveOptions options;
+        options.method = "hierarchical";
+        options.tolerance = tolerance;
+        options.max_seconds = max_seconds;
+        options.threads = threads;
+        const auto outcome =
+            run_isolated([&] { return solve_case(bench.scene, options, bench.reference); },
+                         watchdog_for(max_seconds));
+        if (!outcome.value || outcome.value->at("status") != "converged") {
+            std::cerr << "radiant-bench: the reference of " << bench.scene.name
+                      << " did not converge: "
+                      << (outcome.value ? outcome.value->dump() : outcome.failure) << '\n';
+            return false;
+        }
+        const auto& v = *outcome.value;
+        cached = CachedReference{v.at("sensor").get<std::vector<double>>(),
+                                 v.at("seconds").get<double>(), number_or_nan(v.at("estimate"))};
+        cache.store(bench.scene, tolerance, *cached);
     }
-    const double n = static_cast<double>(reference.size());
-    return {std::sqrt(sq / n) / (mean / n), "workplane nRMS"};
-}
-
-std::string fixed(double v, int digits) {
-    if (std::isnan(v)) return "n/a";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
-
-std::string sci(double v) {
-    if (std::isnan(v)) return "n/a";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
-std::vector<std::string> cells(const Row& r) {
-    return {r.scene,
-            r.method,
-            sci(r.tolerance),
-            fixed(r.seconds, 3),
-            std::to_string(r.rays),
-            std::to_string(r.patches),
-            std::to_string(r.iterations),
-            sci(r.error_estimate),
-            sci(r.true_error),
-            r.worst,
-            r.status};
-}
-
-const std::vector<std::string> kHeader{"scene",      "method",      "tolerance",  "seconds",
-                                       "rays",       "patches",     "iterations", "error estimate",
-                                       "true error", "worst check", "status"};
-
-void print_markdown(std::ostream& out, const std::vector<std::string>& row) {
-    out << '|';
-    for (const auto& c : row) out << ' ' << c << " |";
-    out << '\n';
+    std::ostringstream source;
+    source << "hierarchical " << tolerance;
+    bench.reference.source = source.str();
+    bench.reference.illuminance = std::move(cached->illuminance);
+    std::cerr << "radiant-bench: reference of " << bench.scene.name << ": "
+              << bench.reference.source << ", " << cached->seconds << " s, error estimate "
+              << cached->error_estimate << '\n';
+    return true;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"radiant-bench: every solver on every validation scene"};
-    std::vector<std::string> methods{"direct", "jacobi", "gauss-seidel", "shooting"};
-    std::vector<double> tolerances;
+    CLI::App app{
+        "radiant-bench: every solver at several tolerances against exact or reference "
+        "answers"};
+    std::vector<std::string> methods{"direct", "gauss-seidel", "jacobi", "shooting",
+                                     "hierarchical"};
+    std::vector<double> tolerances{0.1, 0.03, 0.01, 0.003};
     std::vector<std::string> only_scenes;
-    std::string csv_path;
+    std::string out_stem = "radiant-bench";
     std::string data_dir = RADIANT_TEST_DATA;
+    std::string cache_dir = RADIANT_BENCH_CACHE;
+    double max_seconds = 60;
+    double reference_tolerance = 0.0005;
+    double reference_seconds = 1800;
+    double target_error = 0.02;
     int threads = 0;
-    app.add_option("--methods", methods, "solvers to run (default: all four)")->delimiter(',');
-    app.add_option("--tolerance", tolerances,
-                   "tolerance(s) to run; may be repeated (default: each scene's own)");
+    app.add_option("--methods", methods, "solvers to run")->delimiter(',')->capture_default_str();
+    app.add_option("--tolerance", tolerances, "tolerances to run (repeat or comma-separate)")
+        ->delimiter(',')
+        ->capture_default_str();
     app.add_option("--scenes", only_scenes,
-                   "only these scenes (names as in expected.json, or "
-                   "room-s2)")
+                   "scenes: names from expected.json, room-s2, office-x1 … office-x64, or the "
+                   "groups validation (all exact scenes and room-s2) and scaling (the offices); "
+                   "default: all")
         ->delimiter(',');
-    app.add_option("--csv", csv_path, "also write the rows as CSV to FILE");
-    app.add_option("--data", data_dir, "test data directory (tests/data)");
+    app.add_option("--max-seconds", max_seconds, "time cap of each case")->capture_default_str();
+    app.add_option("--out", out_stem, "writes STEM.md, STEM.csv, STEM.gp and STEM.png")
+        ->capture_default_str();
+    app.add_option("--reference-tolerance", reference_tolerance,
+                   "tolerance of the converged hierarchical reference of the offices")
+        ->capture_default_str();
+    app.add_option("--reference-seconds", reference_seconds, "time cap of a reference solve")
+        ->capture_default_str();
+    app.add_option("--cache", cache_dir, "where converged references are kept")
+        ->capture_default_str();
+    app.add_option("--target-error", target_error, "RMS error for the time-to-error summary")
+        ->capture_default_str();
+    app.add_option("--data", data_dir, "test data directory (tests/data)")->capture_default_str();
     app.add_option("--threads", threads, "worker threads (0: all cores)");
     CLI11_PARSE(app, argc, argv);
 
-    const fs::path data(data_dir);
-    nlohmann::json expected;
-    try {
-        std::ifstream in(data / "scenes" / "expected.json");
-        expected = nlohmann::json::parse(in);
-    } catch (const std::exception& e) {
-        std::cerr << "radiant-bench: cannot read expected.json: " << e.what() << '\n';
-        return 2;
-    }
-    std::vector<std::string> scenes;
-    for (auto it = expected.cbegin(); it != expected.cend(); ++it) scenes.push_back(it.key());
-    scenes.push_back(kRoomScene);
-    if (!only_scenes.empty()) {
-        for (const auto& s : only_scenes) {
-            if (std::find(scenes.begin(), scenes.end(), s) == scenes.end()) {
-                std::cerr << "radiant-bench: unknown scene " << s << '\n';
-                return 2;
-            }
-        }
-        scenes = only_scenes;
-    }
     for (const auto& m : methods) {
-        const auto& names = radiant::solver_names();
+        const auto& names = solver_names();
         if (std::find(names.begin(), names.end(), m) == names.end()) {
             std::cerr << "radiant-bench: unknown method " << m << '\n';
             return 2;
         }
     }
-
-    std::ofstream csv;
-    if (!csv_path.empty()) {
-        csv.open(csv_path);
-        if (!csv) {
-            std::cerr << "radiant-bench: cannot write " << csv_path << '\n';
+    const fs::path data(data_dir);
+    nlohmann::json expected;
+    {
+        std::ifstream in(data / "scenes" / "expected.json");
+        expected = nlohmann::json::parse(in, nullptr, false);
+        if (expected.is_discarded() || !expected.is_object()) {
+            std::cerr << "radiant-bench: cannot read " << (data / "scenes" / "expected.json")
+                      << '\n';
             return 2;
         }
-        for (std::size_t i = 0; i < kHeader.size(); ++i) csv << (i ? "," : "") << kHeader[i];
-        csv << '\n';
     }
+    std::vector<std::string> validation;
+    for (auto it = expected.cbegin(); it != expected.cend(); ++it) validation.push_back(it.key());
+    validation.push_back(kRadianceRoom);
+    std::vector<std::string> scaling;
+    for (const int units : kScalingUnits) scaling.push_back(office_name(units));
 
-    print_markdown(std::cout, kHeader);
-    std::cout << '|';
-    for (std::size_t i = 0; i < kHeader.size(); ++i) {
-        std::cout << (i < 2 || i + 2 >= kHeader.size() ? " --- |" : " ---: |");
-    }
-    std::cout << '\n' << std::flush;
-
-    bool all_ok = true;
-    for (const auto& name : scenes) {
-        const bool room = name == kRoomScene;
-        const fs::path file =
-            room ? data / "radiance" / "room-s2.json" : data / "scenes" / (name + ".json");
-        const auto outcome = radiant::proto::load_scene_file(file);
-        if (!outcome.ok()) {
-            for (const auto& p : outcome.problems) {
-                std::cerr << radiant::proto::format_problem(file.string(), p) << '\n';
+    std::vector<std::string> names;
+    if (only_scenes.empty()) only_scenes = {"validation", "scaling"};
+    for (const auto& s : only_scenes) {
+        const auto& group = s == "validation" ? validation
+                            : s == "scaling"  ? scaling
+                                              : std::vector<std::string>{s};
+        for (const auto& n : group) {
+            const bool known =
+                std::find(validation.begin(), validation.end(), n) != validation.end() ||
+                std::find(scaling.begin(), scaling.end(), n) != scaling.end();
+            if (!known) {
+                std::cerr << "radiant-bench: unknown scene " << n << '\n';
+                return 2;
             }
-            all_ok = false;
-            continue;
+            if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
         }
-        const radiant::Scene& scene = *outcome.scene;
-        const std::vector<double> reference =
-            room ? read_reference(data / "radiance" / "room-s2.reference.csv")
-                 : std::vector<double>{};
-        const std::vector<double> tols =
-            tolerances.empty() ? std::vector<double>{scene.settings.tolerance} : tolerances;
-        for (const double tol : tols) {
-            for (const auto& method : methods) {
-                radiant::SolveOptions options = radiant::options_from(scene.settings);
+    }
+
+    std::ofstream markdown(out_stem + ".md"), csv(out_stem + ".csv");
+    if (!markdown || !csv) {
+        std::cerr << "radiant-bench: cannot write " << out_stem << ".md / .csv\n";
+        return 2;
+    }
+    print_markdown_header(std::cout);
+    print_markdown_header(markdown);
+    print_csv_header(csv);
+
+    const ReferenceCache cache{fs::path(cache_dir)};
+    std::vector<BenchRow> rows;
+    bool all_ok = true;
+    for (const auto& name : names) {
+        BenchScene bench;
+        if (name == kRadianceRoom) {
+            const auto scene = load(data / "radiance" / "room-s2.json");
+            if (!scene) return 2;
+            bench.scene = *scene;
+            bench.reference = {"RADIANCE", nullptr, "workplane",
+                               read_radiance_csv(data / "radiance" / "room-s2.reference.csv")};
+        } else if (expected.contains(name)) {
+            const auto scene = load(data / "scenes" / (name + ".json"));
+            if (!scene) return 2;
+            bench.scene = *scene;
+            bench.reference = {"exact", expected.at(name), "", {}};
+        } else {
+            const int units = std::stoi(name.substr(name.find('x') + 1));
+            bench.scene = furnished_office(units);
+            bench.reference.sensor = bench.scene.sensors.at(0).name;
+            if (!prepare_reference(bench, reference_tolerance, reference_seconds, threads, cache)) {
+                all_ok = false;
+                continue;
+            }
+        }
+        const std::size_t triangles = input_triangles(bench.scene);
+        for (const auto& method : methods) {
+            for (const double tol : tolerances) {
+                SolveOptions options = options_from(bench.scene.settings);
                 options.method = method;
                 options.tolerance = tol;
+                options.max_seconds = max_seconds;
                 options.threads = threads;
-                const Result result = radiant::solve(scene, options);
-                Row row;
+                const auto outcome =
+                    run_isolated([&] { return solve_case(bench.scene, options, bench.reference); },
+                                 watchdog_for(max_seconds));
+                BenchRow row;
                 row.scene = name;
+                row.triangles = triangles;
                 row.method = method;
-                row.status = radiant::to_string(result.status);
                 row.tolerance = tol;
-                row.seconds = result.stats.seconds;
-                row.rays = result.stats.rays;
-                row.patches = result.stats.patches;
-                row.iterations = result.stats.iterations;
-                row.error_estimate = result.stats.error_estimate;
-                if (result.status == radiant::SolveStatus::failed) {
-                    std::cerr << name << " / " << method << ": " << result.error << '\n';
-                    row.true_error = kNaN;
-                    all_ok = false;
+                row.peak_mib = outcome.peak_mib;
+                if (outcome.value) {
+                    const auto& v = *outcome.value;
+                    row.status = v.at("status");
+                    row.seconds = v.at("seconds");
+                    row.rays = v.at("rays");
+                    row.elements = v.at("elements");
+                    row.links = v.at("links");
+                    row.rms_error = number_or_nan(v.at("rms"));
+                    row.max_error = number_or_nan(v.at("max"));
+                    row.error_estimate = number_or_nan(v.at("estimate"));
+                    if (row.status == "failed") {
+                        std::cerr << name << " / " << method << ": "
+                                  << v.at("error").get<std::string>() << '\n';
+                    }
                 } else {
-                    const TrueError e =
-                        room ? room_error(result, reference) : checks_error(result, expected[name]);
-                    row.true_error = e.value;
-                    row.worst = e.worst;
+                    row.status = "crashed";
+                    row.rms_error = row.max_error = row.error_estimate = std::nan("");
+                    std::cerr << name << " / " << method << ": " << outcome.failure << '\n';
+                    all_ok = false;
                 }
-                const auto c = cells(row);
-                print_markdown(std::cout, c);
+                print_markdown_row(std::cout, row);
                 std::cout << std::flush;
-                if (csv) {
-                    for (std::size_t i = 0; i < c.size(); ++i) csv << (i ? "," : "") << c[i];
-                    csv << '\n';
-                }
+                print_markdown_row(markdown, row);
+                print_csv_row(csv, row);
+                rows.push_back(row);
+                // A refusal (e.g. a dense solver on too many polygons) does not depend on the
+                // tolerance: the other tolerances would only repeat it.
+                if (row.status == "failed") break;
             }
         }
     }
+
+    std::ostringstream summary;
+    print_time_to_error(summary, rows, target_error);
+    std::vector<std::string> series;
+    for (const auto& n : scaling) {
+        if (std::find(names.begin(), names.end(), n) != names.end()) series.push_back(n);
+    }
+    if (series.size() >= 2) print_scaling(summary, rows, series);
+    std::cout << summary.str();
+    markdown << summary.str();
+    plot_error_against_time(rows, out_stem, std::cerr);
     return all_ok ? 0 : 1;
 }

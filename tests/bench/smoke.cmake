@@ -1,20 +1,34 @@
-# Runs radiant-bench on one small scene with one method; fails unless it exits 0, prints the
-# Markdown header and one row, and writes the CSV.
-file(REMOVE ${CSV})
-execute_process(COMMAND ${BENCH} --scenes parallel-squares-d1 --methods direct --csv ${CSV}
+# Runs radiant-bench on one validation scene and the smallest office (with a coarse reference)
+# with two methods; fails unless it exits 0, prints the table with a row per case, reports the
+# time to error, and writes the Markdown, CSV and (with gnuplot) PNG files.
+foreach(ext md csv gp png)
+  file(REMOVE ${OUT}.${ext})
+endforeach()
+execute_process(COMMAND ${BENCH} --scenes parallel-squares-d1,office-x1
+                        --methods direct,hierarchical --tolerance 0.3
+                        --reference-tolerance 0.1 --max-seconds 20 --out ${OUT} --cache ${CACHE}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "radiant-bench exited with ${rc}")
 endif()
-string(FIND "${out}" "| scene | method | tolerance | seconds | rays | patches | iterations | error estimate | true error | worst check | status |" header)
+string(FIND "${out}" "| scene | triangles | method | tolerance | seconds | rays | elements | links | peak MiB | rms error | max error | error estimate | status |" header)
 if(header EQUAL -1)
   message(FATAL_ERROR "the table header was not printed")
 endif()
-string(FIND "${out}" "| parallel-squares-d1 | direct |" row)
-if(row EQUAL -1)
-  message(FATAL_ERROR "no row for parallel-squares-d1 / direct")
+foreach(row "| parallel-squares-d1 | 4 | direct | 0.3 |" "| office-x1 | 500 | hierarchical | 0.3 |"
+            "Time to an RMS error of at most 0.02")
+  string(FIND "${out}" "${row}" found)
+  if(found EQUAL -1)
+    message(FATAL_ERROR "missing from the output: ${row}")
+  endif()
+endforeach()
+set(files ${OUT}.md ${OUT}.csv)
+if(GNUPLOT)
+  list(APPEND files ${OUT}.png)
 endif()
-if(NOT EXISTS ${CSV})
-  message(FATAL_ERROR "--csv did not write ${CSV}")
-endif()
+foreach(f ${files})
+  if(NOT EXISTS ${f})
+    message(FATAL_ERROR "radiant-bench did not write ${f}")
+  endif()
+endforeach()

@@ -1,0 +1,50 @@
+// The benchmark's rows and every way it reports them: a Markdown table on stdout and in a file,
+// CSV, a gnuplot script and PNG of error against time, the scaling exponents, and the time
+// each method needs to reach a target error.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace radiant::bench {
+
+struct BenchRow {
+    std::string scene;
+    std::size_t triangles = 0;  ///< input triangles (mesh faces and polygons as fans)
+    std::string method;
+    double tolerance = 0;
+    double seconds = 0;
+    std::uint64_t rays = 0;
+    std::size_t elements = 0, links = 0;
+    double peak_mib = 0;
+    double rms_error = 0, max_error = 0;  ///< relative, against the scene's reference
+    double error_estimate = 0;
+    std::string status;
+};
+
+const std::vector<std::string>& table_header();
+std::vector<std::string> table_cells(const BenchRow& row);
+
+void print_markdown_header(std::ostream& out);
+void print_markdown_row(std::ostream& out, const BenchRow& row);
+void print_csv_header(std::ostream& out);
+void print_csv_row(std::ostream& out, const BenchRow& row);
+
+/// Writes `<stem>.gp` (a self-contained gnuplot script with the data inline) and runs gnuplot on
+/// it to make `<stem>.png`: RMS error against seconds, log-log, one line per method and scene.
+/// Returns false (with a message on `log`) when gnuplot is missing or fails.
+bool plot_error_against_time(const std::vector<BenchRow>& rows, const std::filesystem::path& stem,
+                             std::ostream& log);
+
+/// For each method and tolerance over the rows of `scenes` (a scaling series): the least-squares
+/// exponents of seconds and of peak memory against input triangles, and links per element.
+void print_scaling(std::ostream& out, const std::vector<BenchRow>& rows,
+                   const std::vector<std::string>& scenes);
+
+/// For each scene and method, the least time among rows whose RMS error is at most `target`.
+void print_time_to_error(std::ostream& out, const std::vector<BenchRow>& rows, double target);
+
+}  // namespace radiant::bench
