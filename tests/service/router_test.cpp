@@ -12,7 +12,6 @@
 
 #include "radiant/proto/scene_json.h"
 #include "radiant/server/config.h"
-#include "radiant/server/event_stream.h"
 #include "service_scenes.h"
 #include "test_files.h"
 
@@ -270,39 +269,6 @@ TEST(JobQueue, UnfinishedJobsRunAgainAfterRestart) {
         EXPECT_TRUE(store.result(job.id).has_value());
     }
     fs::remove_all(dir);
-}
-
-TEST(EventStream, ProgressThenDoneOnce) {
-    EventStream stream;
-    JobRecord job;
-    job.id = "abc";
-    job.status = JobStatus::running;
-    EXPECT_EQ(stream.next(job), "");  // nothing reported yet
-    job.progress.sequence = 3;
-    job.progress.fraction = 0.5;
-    const std::string progress = stream.next(job);
-    EXPECT_TRUE(progress.starts_with("event: progress\nid: 3\ndata: {")) << progress;
-    EXPECT_TRUE(progress.ends_with("}\n\n"));
-    EXPECT_EQ(stream.next(job), "");  // unchanged: nothing new
-    job.status = JobStatus::done;
-    job.progress.sequence = 4;
-    const std::string end = stream.next(job);
-    EXPECT_NE(end.find("event: progress\nid: 4\n"), std::string::npos);
-    EXPECT_NE(end.find("event: done\ndata: {\"id\":\"abc\",\"status\":\"done\"}\n\n"),
-              std::string::npos);
-    EXPECT_TRUE(stream.finished());
-    EXPECT_EQ(stream.next(job), "");
-}
-
-TEST(EventStream, LastEventIdSkipsWhatTheClientHas) {
-    EventStream stream(5);
-    JobRecord job;
-    job.id = "abc";
-    job.status = JobStatus::running;
-    job.progress.sequence = 5;
-    EXPECT_EQ(stream.next(job), "");
-    job.progress.sequence = 6;
-    EXPECT_NE(stream.next(job).find("id: 6"), std::string::npos);
 }
 
 TEST(Query, ParsesAndDecodes) {
