@@ -62,6 +62,9 @@ struct JobQueue::LiveJob final : SolveObserver {
         info.radiosity_event_id = ++last_event_id;
         info.progress = job_progress(s.progress, record.progress.sequence);
         snapshot = std::make_shared<const JobSnapshot>(id, std::move(info), s.mesh);
+        // Linking reports no progress for seconds; the status still shows the time going by.
+        record.progress.elapsed_seconds =
+            std::max(record.progress.elapsed_seconds, s.progress.elapsed_seconds);
     }
 
     JobRecord copy() const {
