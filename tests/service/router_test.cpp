@@ -182,7 +182,33 @@ TEST(Router, RunningResultIsAProgressSnapshot) {
     EXPECT_EQ(doc["status"], "running");
     EXPECT_EQ(doc["scene"], "tiny-room");
     EXPECT_TRUE(doc["stats"].contains("iterations"));
+    EXPECT_TRUE(doc["progress"].contains("fraction"));
+
+    // Once the engine has published a snapshot, the running result names it and carries its mesh.
+    json running;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    do {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        running = json::parse(s.get("/v1/jobs/" + id + "/result?include=mesh").body());
+    } while (!running.contains("mesh") && std::chrono::steady_clock::now() < deadline);
+    ASSERT_TRUE(running.contains("mesh")) << running.dump();
+    EXPECT_GE(running["snapshot"]["version"].get<int>(), 1);
+    const json& mesh = running["mesh"];
+    EXPECT_GT(mesh["triangles"].size(), 0u);
+    EXPECT_EQ(mesh["triangle_radiosity"].size(), mesh["triangles"].size());
+    EXPECT_EQ(mesh["vertex_radiosity"].size(), mesh["vertices"].size());
+
+    // The store has the running job's progress within about a second.
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    EXPECT_GT(s.store().find(id, false)->progress.sequence, 0u);
+
+    // Cancelled: the best result so far keeps its mesh.
     s.del("/v1/jobs/" + id);
+    ASSERT_EQ(s.wait_for(id, "cancelled")["status"], "cancelled");
+    const json stopped = json::parse(s.get("/v1/jobs/" + id + "/result?include=mesh").body());
+    EXPECT_EQ(stopped["status"], "stopped");
+    EXPECT_GT(stopped["mesh"]["triangles"].size(), 0u);
+    EXPECT_FALSE(stopped.contains("progress"));
 }
 
 TEST(Router, IdempotencyKeyReturnsTheSameJob) {
