@@ -25,6 +25,38 @@ Response job_response(const Request& request, http::status status, const JobReco
     return response;
 }
 
+/// The latest state of a running job as a radiant-result/1 document: statistics so far and its
+/// progress. Sensors and surface averages are computed only at the end of a solve.
+nlohmann::json running_result(ServiceContext& ctx, const JobRecord& job,
+                              const JobSnapshot* snapshot) {
+    const JobProgress& p = job.progress;
+    nlohmann::json doc = {{"format", "radiant-result/1"},
+                          {"scene", ctx.jobs.scene_name(job.id)},
+                          {"status", "running"},
+                          {"stats",
+                           {{"iterations", p.iterations},
+                            {"rays", p.rays},
+                            {"seconds", p.elapsed_seconds},
+                            {"unshot_fraction", p.unshot_fraction},
+                            {"error_estimate", p.error_estimate}}},
+                          {"progress", job_to_json(job)["progress"]},
+                          {"sensors", nlohmann::json::array()},
+                          {"surfaces", nlohmann::json::array()}};
+    if (snapshot) {
+        doc["snapshot"] = {{"version", snapshot->info().version},
+                           {"mesh_version", snapshot->info().mesh_version}};
+    }
+    return doc;
+}
+
+/// `document` (a JSON object's text) with a "mesh" member: contract §3's solved mesh.
+std::string add_mesh(std::string document, const CompactMesh& mesh) {
+    while (!document.empty() && document.back() != '}') document.pop_back();
+    if (document.empty()) return document;
+    document.pop_back();
+    return document + ",\"mesh\":{" + geometry_json(mesh) + "," + radiosity_json(mesh) + "}}";
+}
+
 }  // namespace
 
 Response submit_job(ServiceContext& ctx, const Request& request) {
@@ -78,38 +110,38 @@ Response get_job(ServiceContext& ctx, const Request& request, const std::string&
     return job_response(request, http::status::ok, *job);
 }
 
-Response get_result(ServiceContext& ctx, const Request& request, const std::string& id) {
+Response get_result(ServiceContext& ctx, const Request& request, const std::string& id,
+                    const Query& query) {
+    bool with_mesh = false;
+    if (const auto it = query.find("include"); it != query.end()) {
+        if (it->second != "mesh") {
+            return error_response(request, http::status::bad_request, "invalid_query",
+                                  "include must be \"mesh\", not \"" + it->second + "\"");
+        }
+        with_mesh = true;
+    }
     const auto job = ctx.jobs.find(id);
     if (!job) return unknown_job(request, id);
     if (job->status == JobStatus::queued) {
         return error_response(request, http::status::not_found, "not_ready",
                               "job " + id + " is queued; it has no result yet");
     }
-    if (job->status == JobStatus::running) {
-        // The engine publishes progress but not yet intermediate radiosity, so a running
-        // snapshot carries statistics only.
-        const JobProgress& p = job->progress;
-        return json_response(request, http::status::ok,
-                             {{"format", "radiant-result/1"},
-                              {"scene", ctx.jobs.scene_name(id)},
-                              {"status", "running"},
-                              {"stats",
-                               {{"iterations", p.iterations},
-                                {"rays", p.rays},
-                                {"seconds", p.elapsed_seconds},
-                                {"unshot_fraction", p.unshot_fraction},
-                                {"error_estimate", p.error_estimate}}},
-                              {"progress", {{"stage", p.stage}, {"fraction", p.fraction}}},
-                              {"sensors", nlohmann::json::array()},
-                              {"surfaces", nlohmann::json::array()}});
-    }
-    const auto result = ctx.store.result(id);
-    if (!result) {
+    // One snapshot for the whole answer, so its version and its mesh agree.
+    const bool running = job->status == JobStatus::running;
+    const auto snapshot = running || with_mesh ? ctx.jobs.snapshot(id) : nullptr;
+    std::string document;
+    if (running) {
+        document = running_result(ctx, *job, snapshot.get()).dump();
+    } else if (auto stored = ctx.store.result(id)) {
+        document = std::move(*stored);
+    } else {
         return error_response(
             request, http::status::not_found, "no_result",
             "job " + id + " was " + to_string(job->status) + " before it produced a result");
     }
-    return text_response(request, http::status::ok, *result + "\n", "application/json");
+    // A running job's newest snapshot, or a finished job's final one: the solved mesh.
+    if (with_mesh && snapshot) document = add_mesh(std::move(document), snapshot->mesh());
+    return text_response(request, http::status::ok, document + "\n", "application/json");
 }
 
 Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <exception>
 #include <stdexcept>
 #include <utility>
@@ -14,27 +15,66 @@
 
 namespace radiant::server {
 
-/// Shared between a worker (and the engine's threads, through on_progress) and HTTP sessions.
-/// Lock order: JobQueue::mutex_ before LiveJob::mutex, never the reverse.
+namespace {
+
+/// Least time between two snapshots of a running job: at most two `radiosity` events a second
+/// reach a client, and the engine builds a display mesh no more often than that.
+constexpr double kSnapshotSeconds = 0.5;
+/// Running jobs' progress reaches the store at most this often (it is also in memory at once).
+constexpr auto kProgressWritePeriod = std::chrono::seconds(1);
+
+JobProgress job_progress(const Progress& p, std::uint64_t sequence) {
+    JobProgress q;
+    q.sequence = sequence;
+    q.stage = p.stage;
+    q.fraction = p.fraction;
+    q.iterations = p.iterations;
+    q.unshot_fraction = p.unshot_fraction;
+    q.error_estimate = p.error_estimate;
+    q.elapsed_seconds = p.elapsed_seconds;
+    q.rays = p.rays;
+    return q;
+}
+
+}  // namespace
+
+/// Shared between a worker (and the engine's threads, through the observer) and HTTP sessions.
+/// The observer calls only swap small values and pointers under the job's mutex, so the solver
+/// never waits for a client. Lock order: JobQueue::mutex_ before LiveJob::mutex, never the
+/// reverse.
 struct JobQueue::LiveJob final : SolveObserver {
     explicit LiveJob(JobRecord r) : id(r.id), record(std::move(r)) {}
 
     void on_progress(const Progress& p) noexcept override {
         const std::lock_guard lock(mutex);
-        JobProgress& q = record.progress;
-        ++q.sequence;
-        q.stage = p.stage;
-        q.fraction = p.fraction;
-        q.iterations = p.iterations;
-        q.unshot_fraction = p.unshot_fraction;
-        q.error_estimate = p.error_estimate;
-        q.elapsed_seconds = p.elapsed_seconds;
-        q.rays = p.rays;
+        record.progress = job_progress(p, ++last_event_id);
     }
 
-    JobRecord snapshot() const {
+    void on_snapshot(const Snapshot& s) noexcept override {
+        const std::lock_guard lock(mutex);
+        SnapshotInfo info;
+        info.version = s.version;
+        info.mesh_version = s.mesh_version;
+        info.final = s.final;
+        // One `mesh` event per mesh version, before the first `radiosity` event that uses it.
+        const bool same_mesh = snapshot && snapshot->info().mesh_version == s.mesh_version;
+        info.mesh_event_id = same_mesh ? snapshot->info().mesh_event_id : ++last_event_id;
+        info.radiosity_event_id = ++last_event_id;
+        info.progress = job_progress(s.progress, record.progress.sequence);
+        snapshot = std::make_shared<const JobSnapshot>(id, std::move(info), s.mesh);
+        // Linking reports no progress for seconds; the status still shows the time going by.
+        record.progress.elapsed_seconds =
+            std::max(record.progress.elapsed_seconds, s.progress.elapsed_seconds);
+    }
+
+    JobRecord copy() const {
         const std::lock_guard lock(mutex);
         return record;
+    }
+
+    std::shared_ptr<const JobSnapshot> latest() const {
+        const std::lock_guard lock(mutex);
+        return snapshot;
     }
 
     const std::string id;
@@ -43,6 +83,10 @@ struct JobQueue::LiveJob final : SolveObserver {
     mutable std::mutex mutex;
     JobRecord record;        ///< guarded by mutex; never holds the scene text
     std::string scene_name;  ///< guarded by mutex
+    /// Guarded by mutex: the job's event ids (progress, mesh, radiosity) come from one counter.
+    std::uint64_t last_event_id = 0;
+    std::shared_ptr<const JobSnapshot> snapshot;  ///< guarded by mutex
+    std::uint64_t stored_sequence = 0;            ///< progress the store has; writer thread only
 };
 
 JobQueue::JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options)
@@ -57,6 +101,7 @@ JobQueue::JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options)
     }
     const std::size_t workers = std::max<std::size_t>(1, options_.workers);
     for (std::size_t i = 0; i < workers; ++i) workers_.emplace_back([this] { work(); });
+    workers_.emplace_back([this] { write_progress(); });
 }
 
 JobQueue::~JobQueue() { shutdown(); }
@@ -103,9 +148,27 @@ std::optional<JobRecord> JobQueue::find(const std::string& id) const {
             const auto it = live_.find(id);
             if (it != live_.end()) job = it->second;
         }
-        if (job) return job->snapshot();
+        if (job) return job->copy();
     }
     return store_.find(id, false);
+}
+
+std::shared_ptr<const JobSnapshot> JobQueue::snapshot(const std::string& id) const {
+    {
+        std::shared_ptr<LiveJob> job;
+        {
+            const std::lock_guard lock(mutex_);
+            const auto it = live_.find(id);
+            if (it != live_.end()) job = it->second;
+        }
+        if (job) return job->latest();
+    }
+    std::optional<StoredMesh> stored = store_.mesh(id);
+    if (!stored) return nullptr;
+    std::optional<CompactMesh> mesh = decode(stored->blob);
+    if (!mesh) throw std::runtime_error("job store: the mesh of job " + id + " is damaged");
+    if (const auto job = store_.find(id, false)) stored->info.progress = job->progress;
+    return std::make_shared<const JobSnapshot>(id, std::move(stored->info), std::move(*mesh));
 }
 
 std::string JobQueue::scene_name(const std::string& id) const {
@@ -140,7 +203,7 @@ std::optional<JobRecord> JobQueue::cancel(const std::string& id) {
             job->user_cancelled = true;
             job->token.cancel();
             spdlog::info("job {} cancel requested", id);
-            return job->snapshot();
+            return job->copy();
         }
     }
     return find(id);
@@ -167,7 +230,31 @@ void JobQueue::shutdown() {
         workers.swap(workers_);
     }
     wake_.notify_all();
+    progress_wake_.notify_all();
     for (std::thread& t : workers) t.join();
+}
+
+void JobQueue::write_progress() {
+    std::unique_lock lock(mutex_);
+    while (!progress_wake_.wait_for(lock, kProgressWritePeriod, [this] { return stopping_; })) {
+        std::vector<std::pair<std::string, JobProgress>> changed;
+        for (const auto& [id, job] : live_) {
+            const std::lock_guard job_lock(job->mutex);
+            if (job->record.status != JobStatus::running) continue;
+            if (job->record.progress.sequence == job->stored_sequence) continue;
+            job->stored_sequence = job->record.progress.sequence;
+            changed.emplace_back(id, job->record.progress);
+        }
+        lock.unlock();  // the store has its own lock; submissions need not wait for the disk
+        for (const auto& [id, progress] : changed) {
+            try {
+                store_.save_progress(id, progress);
+            } catch (const std::exception& e) {
+                spdlog::error("job {}: progress not stored: {}", id, e.what());
+            }
+        }
+        lock.lock();
+    }
 }
 
 void JobQueue::work() {
@@ -204,7 +291,7 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
         job->record.status = JobStatus::running;
         job->record.started = now_millis();
     }
-    store_.mark_running(id, job->snapshot().started);
+    store_.mark_running(id, job->copy().started);
     spdlog::info("job {} queued -> running", id);
 
     Result result;
@@ -214,6 +301,7 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     } else {
         SolveOptions options = options_from(outcome.scene->settings);
         options.threads = options_.solve_threads;
+        options.snapshot_interval_seconds = kSnapshotSeconds;
         if (options_.job_seconds) {
             options.max_seconds = std::min(options.max_seconds.value_or(*options_.job_seconds),
                                            *options_.job_seconds);
@@ -235,8 +323,14 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     const JobStatus status = job->user_cancelled                    ? JobStatus::cancelled
                              : result.status == SolveStatus::failed ? JobStatus::failed
                                                                     : JobStatus::done;
-    JobProgress progress = job->snapshot().progress;
-    ++progress.sequence;
+    JobProgress progress;
+    std::shared_ptr<const JobSnapshot> final_snapshot;
+    {
+        const std::lock_guard lock(job->mutex);
+        progress = job->record.progress;
+        progress.sequence = ++job->last_event_id;  // after the final snapshot's events
+        final_snapshot = job->snapshot;
+    }
     if (status == JobStatus::done) progress.fraction = 1;
     progress.iterations = result.stats.iterations;
     progress.unshot_fraction = result.stats.unshot_fraction;
@@ -244,8 +338,13 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     progress.elapsed_seconds = result.stats.seconds;
     progress.rays = result.stats.rays;
     const UnixMillis finished = now_millis();
+    // The mesh is stored as the final snapshot streamed it, apart from the result text.
+    std::optional<StoredMesh> mesh;
+    if (final_snapshot && final_snapshot->info().final) {
+        mesh = StoredMesh{final_snapshot->info(), encode(final_snapshot->mesh())};
+    }
     store_.finish(id, status, finished, progress, result.error,
-                  proto::result_to_json(result).dump());
+                  proto::result_to_json(result).dump(), mesh);
     metrics_.count_solve(result.stats.seconds, result.stats.rays);
     {
         const std::lock_guard lock(job->mutex);

@@ -27,6 +27,10 @@ public:
         check(sqlite3_bind_int64(stmt_, i, value));
         return *this;
     }
+    Statement& bind_blob(int i, const std::string& bytes) {
+        check(sqlite3_bind_blob64(stmt_, i, bytes.data(), bytes.size(), SQLITE_TRANSIENT));
+        return *this;
+    }
     Statement& bind_null(int i) {
         check(sqlite3_bind_null(stmt_, i));
         return *this;
@@ -45,6 +49,12 @@ public:
                  : std::string();
     }
     std::int64_t integer(int col) const { return sqlite3_column_int64(stmt_, col); }
+    std::string blob(int col) const {
+        const void* p = sqlite3_column_blob(stmt_, col);
+        return p ? std::string(static_cast<const char*>(p),
+                               static_cast<std::size_t>(sqlite3_column_bytes(stmt_, col)))
+                 : std::string();
+    }
 
 private:
     void check(int rc) const {
@@ -117,6 +127,17 @@ JobStore::JobStore(const std::filesystem::path& data_dir) {
         "CREATE TABLE IF NOT EXISTS results ("
         " job_id TEXT PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,"
         " result TEXT NOT NULL)");
+    // The solved mesh apart from the result text: float32 arrays in one blob (compact_mesh.h),
+    // with the event ids its `mesh` and `radiosity` events had, so a stream can replay them.
+    exec(
+        "CREATE TABLE IF NOT EXISTS meshes ("
+        " job_id TEXT PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,"
+        " version INTEGER NOT NULL,"
+        " mesh_version INTEGER NOT NULL,"
+        " mesh_event_id INTEGER NOT NULL,"
+        " radiosity_event_id INTEGER NOT NULL,"
+        " final INTEGER NOT NULL,"
+        " mesh BLOB NOT NULL)");
 }
 
 JobStore::~JobStore() { sqlite3_close(db_); }
@@ -186,14 +207,16 @@ void JobStore::mark_running(const std::string& id, UnixMillis started) {
 
 void JobStore::save_progress(const std::string& id, const JobProgress& progress) {
     const std::lock_guard lock(mutex_);
-    Statement s(db_, "UPDATE jobs SET progress = ? WHERE id = ?");
+    // A late write must not replace the final progress of a job that has just finished.
+    Statement s(db_, "UPDATE jobs SET progress = ? WHERE id = ? AND status = 'running'");
     s.bind(1, progress_to_json(progress).dump()).bind(2, id);
     s.step();
 }
 
 void JobStore::finish(const std::string& id, JobStatus status, UnixMillis finished,
                       const JobProgress& progress, const std::string& error,
-                      const std::optional<std::string>& result_json) {
+                      const std::optional<std::string>& result_json,
+                      const std::optional<StoredMesh>& mesh) {
     const std::lock_guard lock(mutex_);
     exec("BEGIN IMMEDIATE");
     try {
@@ -211,6 +234,21 @@ void JobStore::finish(const std::string& id, JobStatus status, UnixMillis finish
             r.bind(1, id).bind(2, *result_json);
             r.step();
         }
+        if (mesh) {
+            Statement m(db_,
+                        "INSERT OR REPLACE INTO meshes (job_id, version, mesh_version,"
+                        " mesh_event_id, radiosity_event_id, final, mesh)"
+                        " VALUES (?, ?, ?, ?, ?, ?, ?)");
+            const SnapshotInfo& i = mesh->info;
+            m.bind(1, id)
+                .bind(2, static_cast<std::int64_t>(i.version))
+                .bind(3, static_cast<std::int64_t>(i.mesh_version))
+                .bind(4, static_cast<std::int64_t>(i.mesh_event_id))
+                .bind(5, static_cast<std::int64_t>(i.radiosity_event_id))
+                .bind(6, std::int64_t{i.final ? 1 : 0})
+                .bind_blob(7, mesh->blob);
+            m.step();
+        }
         exec("COMMIT");
     } catch (...) {
         sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
@@ -224,6 +262,23 @@ std::optional<std::string> JobStore::result(const std::string& id) const {
     s.bind(1, id);
     if (!s.step()) return std::nullopt;
     return s.text(0);
+}
+
+std::optional<StoredMesh> JobStore::mesh(const std::string& id) const {
+    const std::lock_guard lock(mutex_);
+    Statement s(db_,
+                "SELECT version, mesh_version, mesh_event_id, radiosity_event_id, final, mesh"
+                " FROM meshes WHERE job_id = ?");
+    s.bind(1, id);
+    if (!s.step()) return std::nullopt;
+    StoredMesh mesh;
+    mesh.info.version = static_cast<std::uint64_t>(s.integer(0));
+    mesh.info.mesh_version = static_cast<std::uint64_t>(s.integer(1));
+    mesh.info.mesh_event_id = static_cast<std::uint64_t>(s.integer(2));
+    mesh.info.radiosity_event_id = static_cast<std::uint64_t>(s.integer(3));
+    mesh.info.final = s.integer(4) != 0;
+    mesh.blob = s.blob(5);
+    return mesh;
 }
 
 std::vector<std::string> JobStore::requeue_unfinished() {

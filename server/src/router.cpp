@@ -123,7 +123,7 @@ RouteResult Router::dispatch(const Request& request) {
     }
     if (parts.size() == 4 && parts[3] == "result") {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
-        return {handlers::get_result(ctx_, request, id), std::nullopt};
+        return {handlers::get_result(ctx_, request, id, query), std::nullopt};
     }
     if (parts.size() == 4 && parts[3] == "events") {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};

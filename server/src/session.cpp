@@ -166,9 +166,11 @@ void Session::start_events(Response header, const EventStreamStart& start) {
 }
 
 void Session::poll_events() {
-    const std::optional<JobRecord> job = router_.context().jobs.find(event_job_);
+    JobQueue& jobs = router_.context().jobs;
+    const std::optional<JobRecord> job = jobs.find(event_job_);
     if (!job) return close();
-    std::string text = events_->next(*job);
+    const std::shared_ptr<const JobSnapshot> snapshot = jobs.snapshot(event_job_);
+    std::string text = events_->next(*job, snapshot.get());
     const auto now = std::chrono::steady_clock::now();
     if (text.empty() && now - last_event_write_ >= limits_.keep_alive) text = kKeepAliveComment;
     if (text.empty()) {

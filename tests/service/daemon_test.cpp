@@ -66,12 +66,16 @@ TEST_F(DaemonTest, SolvesRefusesAndStreams) {
     ASSERT_EQ(result.status, 200u);
     EXPECT_GT(json::parse(result.body)["sensors"][0]["average"].get<double>(), 0);
 
-    // A finished job's stream is its last progress, then done.
+    // A finished job's stream is its mesh, final radiosity and last progress, then done.
     const auto events = http_call(d.port(), verb::get, "/v1/jobs/" + id + "/events");
     EXPECT_EQ(events.status, 200u);
     EXPECT_EQ(events.headers.at("Content-Type"), "text/event-stream");
+    EXPECT_TRUE(events.body.starts_with("event: mesh\nid: ")) << events.body;
+    EXPECT_NE(events.body.find("event: radiosity\nid: "), std::string::npos) << events.body;
     EXPECT_NE(events.body.find("event: progress\nid: "), std::string::npos) << events.body;
-    EXPECT_NE(events.body.find("event: done\ndata: {\"id\":\"" + id + "\",\"status\":\"done\"}"),
+    const std::size_t done = events.body.find("event: done\nid: ");
+    ASSERT_NE(done, std::string::npos) << events.body;
+    EXPECT_NE(events.body.find("\ndata: {\"id\":\"" + id + "\",\"status\":\"done\"}\n\n", done),
               std::string::npos)
         << events.body;
 

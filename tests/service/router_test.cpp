@@ -12,7 +12,6 @@
 
 #include "radiant/proto/scene_json.h"
 #include "radiant/server/config.h"
-#include "radiant/server/event_stream.h"
 #include "service_scenes.h"
 #include "test_files.h"
 
@@ -183,7 +182,33 @@ TEST(Router, RunningResultIsAProgressSnapshot) {
     EXPECT_EQ(doc["status"], "running");
     EXPECT_EQ(doc["scene"], "tiny-room");
     EXPECT_TRUE(doc["stats"].contains("iterations"));
+    EXPECT_TRUE(doc["progress"].contains("fraction"));
+
+    // Once the engine has published a snapshot, the running result names it and carries its mesh.
+    json running;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    do {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        running = json::parse(s.get("/v1/jobs/" + id + "/result?include=mesh").body());
+    } while (!running.contains("mesh") && std::chrono::steady_clock::now() < deadline);
+    ASSERT_TRUE(running.contains("mesh")) << running.dump();
+    EXPECT_GE(running["snapshot"]["version"].get<int>(), 1);
+    const json& mesh = running["mesh"];
+    EXPECT_GT(mesh["triangles"].size(), 0u);
+    EXPECT_EQ(mesh["triangle_radiosity"].size(), mesh["triangles"].size());
+    EXPECT_EQ(mesh["vertex_radiosity"].size(), mesh["vertices"].size());
+
+    // The store has the running job's progress within about a second.
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    EXPECT_GT(s.store().find(id, false)->progress.sequence, 0u);
+
+    // Cancelled: the best result so far keeps its mesh.
     s.del("/v1/jobs/" + id);
+    ASSERT_EQ(s.wait_for(id, "cancelled")["status"], "cancelled");
+    const json stopped = json::parse(s.get("/v1/jobs/" + id + "/result?include=mesh").body());
+    EXPECT_EQ(stopped["status"], "stopped");
+    EXPECT_GT(stopped["mesh"]["triangles"].size(), 0u);
+    EXPECT_FALSE(stopped.contains("progress"));
 }
 
 TEST(Router, IdempotencyKeyReturnsTheSameJob) {
@@ -270,39 +295,6 @@ TEST(JobQueue, UnfinishedJobsRunAgainAfterRestart) {
         EXPECT_TRUE(store.result(job.id).has_value());
     }
     fs::remove_all(dir);
-}
-
-TEST(EventStream, ProgressThenDoneOnce) {
-    EventStream stream;
-    JobRecord job;
-    job.id = "abc";
-    job.status = JobStatus::running;
-    EXPECT_EQ(stream.next(job), "");  // nothing reported yet
-    job.progress.sequence = 3;
-    job.progress.fraction = 0.5;
-    const std::string progress = stream.next(job);
-    EXPECT_TRUE(progress.starts_with("event: progress\nid: 3\ndata: {")) << progress;
-    EXPECT_TRUE(progress.ends_with("}\n\n"));
-    EXPECT_EQ(stream.next(job), "");  // unchanged: nothing new
-    job.status = JobStatus::done;
-    job.progress.sequence = 4;
-    const std::string end = stream.next(job);
-    EXPECT_NE(end.find("event: progress\nid: 4\n"), std::string::npos);
-    EXPECT_NE(end.find("event: done\ndata: {\"id\":\"abc\",\"status\":\"done\"}\n\n"),
-              std::string::npos);
-    EXPECT_TRUE(stream.finished());
-    EXPECT_EQ(stream.next(job), "");
-}
-
-TEST(EventStream, LastEventIdSkipsWhatTheClientHas) {
-    EventStream stream(5);
-    JobRecord job;
-    job.id = "abc";
-    job.status = JobStatus::running;
-    job.progress.sequence = 5;
-    EXPECT_EQ(stream.next(job), "");
-    job.progress.sequence = 6;
-    EXPECT_NE(stream.next(job).find("id: 6"), std::string::npos);
 }
 
 TEST(Query, ParsesAndDecodes) {

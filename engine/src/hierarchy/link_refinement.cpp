@@ -1,6 +1,7 @@
 #include "hierarchy/link_refinement.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include <tbb/combinable.h>
@@ -195,6 +196,11 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
     if (tree.top() < 0) return out;
     const Oracle oracle(tree, visibility, criteria);
     std::vector<Pair> pending{{tree.top(), tree.top()}};
+    auto add_links = [&out](const Pair& p, const Verdict& v) {
+        for (const SourcePart& part : v.parts) {
+            out.links.push_back({p.receiver, part.element, static_cast<float>(part.factor)});
+        }
+    };
     while (!pending.empty()) {
         if (criteria.should_stop && criteria.should_stop()) {
             out.stopped = true;
@@ -215,11 +221,27 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
         }
         std::vector<Verdict> verdicts(pairs.size());
         tbb::combinable<std::uint64_t> rays([] { return std::uint64_t{0}; });
+        // A round of a large model takes seconds; a stop request ends it within a pair or so, and
+        // the pairs not judged by then are dropped, like those still pending between rounds.
+        std::atomic<bool> interrupted{false};
         tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
             if (pairs[i].receiver == pairs[i].source) return;  // expanded next round
+            if (interrupted.load(std::memory_order_relaxed)) return;
+            if (criteria.should_stop && criteria.should_stop()) {
+                interrupted = true;
+                return;
+            }
             verdicts[i] = oracle.judge(pairs[i], rays.local());
         });
         out.rays += rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
+        if (interrupted) {
+            // Keep what was judged to link; splitting would only queue pairs nobody judges.
+            for (std::size_t i = 0; i < pairs.size(); ++i) {
+                if (verdicts[i].decision == Decision::link) add_links(pairs[i], verdicts[i]);
+            }
+            out.stopped = true;
+            break;
+        }
 
         pending.clear();
         const std::size_t first_new = tree.size();
@@ -234,10 +256,7 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
                 case Decision::drop:
                     break;
                 case Decision::link:
-                    for (const SourcePart& part : v.parts) {
-                        out.links.push_back(
-                            {p.receiver, part.element, static_cast<float>(part.factor)});
-                    }
+                    add_links(p, v);
                     break;
                 case Decision::split_receiver:
                     tree.subdivide(p.receiver);

@@ -28,7 +28,7 @@ struct RefinementCriteria {
     std::uint64_t seed = 1;
     double ambient_irradiance = 0;  ///< guess of the reflected light, for new elements' estimates
     int channels = 1;
-    std::function<bool()> should_stop;  ///< polled between rounds
+    std::function<bool()> should_stop;  ///< polled between rounds and pairs, from any thread
 };
 
 struct RefinementOutcome {

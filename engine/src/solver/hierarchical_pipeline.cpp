@@ -9,6 +9,7 @@
 #include "hierarchy/leaf_mesh.h"
 #include "hierarchy/link_refinement.h"
 #include "meshing/patch_mesh.h"
+#include "solution/gouraud.h"
 #include "solution/surface_summary.h"
 #include "solver/pipeline.h"
 
@@ -26,6 +27,9 @@ constexpr double kLinkPowerFraction = 2.5e-4;
 constexpr double kGatherIrradianceFraction = 0.02;
 // Root patches beyond this would not fit the element budget.
 constexpr std::size_t kMaxRootPatches = 2'000'000;
+// Snapshots show the root patches until the links are refined, then the leaves of the hierarchy.
+constexpr std::uint64_t kRootMeshVersion = 1;
+constexpr std::uint64_t kLeafMeshVersion = 2;
 
 }  // namespace
 
@@ -59,6 +63,23 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     const double ambient = area > 0 ? emitted * rho_mean / (area * (1 - rho_mean)) : 0;
     tree.estimate_from(0, ambient, channels);
 
+    // The root patches lit by their source term (emission and reflected luminaire light) are
+    // what the first sweep starts from; a viewer sees them while the links are refined.
+    if (observer_) {
+        std::vector<double> source(roots.size(), 0.0);
+        for (std::size_t e = 0; e < tree.size(); ++e) {
+            const Element& x = tree[e];
+            if (x.cluster || x.depth > 0) continue;
+            Rgb b{};
+            for (std::size_t c = 0; c < 3; ++c)
+                b[c] = x.exitance[c] + x.reflectance[c] * x.luminaire_irradiance[c];
+            source[static_cast<std::size_t>(x.patch)] = photometric(b, channels);
+        }
+        snapshots_.offer(
+            std::make_shared<const SolvedMesh>(gouraud_mesh(roots, source, scene.world_origin)),
+            kRootMeshVersion);
+    }
+
     report("form factors", 0.05);
     RefinementCriteria criteria;
     // Relative to all the light leaving surfaces (emitted and reflected), as the solution's error.
@@ -84,9 +105,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     std::function<void()> publish;
     if (observer_) {
         publish = [&] {
-            publish_snapshot(std::make_shared<const SolvedMesh>(
+            snapshots_.offer(std::make_shared<const SolvedMesh>(
                                  leaf_mesh(tree, roots, channels, scene.world_origin)),
-                             1, false);
+                             kLeafMeshVersion);
         };
     }
     const HierarchicalOutcome outcome = system.solve(control, publish);
@@ -107,6 +128,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     }
     const double error_estimate = outcome.error_estimate;
 
+    const auto mesh =
+        std::make_shared<const SolvedMesh>(leaf_mesh(tree, roots, channels, scene.world_origin));
+    // The radiosity is final from here on; the heartbeat shows it while the sensors gather.
+    snapshots_.offer(mesh, kLeafMeshVersion);
     report("sensors", 0.9, outcome.iterations, error_estimate, 0);
     double mean_irradiance = 0;
     for (const SolvedElement& s : solved)
@@ -121,13 +146,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     result.surfaces = std::move(summary.surfaces);
     result.stats.emitted_flux_lm = summary.emitted_flux_lm;
     result.stats.absorbed_flux_lm = summary.absorbed_flux_lm;
-    const auto mesh =
-        std::make_shared<const SolvedMesh>(leaf_mesh(tree, roots, channels, scene.world_origin));
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
                  channels, stopped);
-    last_progress_.error_estimate = error_estimate;
-    publish_snapshot(mesh, 1, true);
+    publish_final(mesh, kLeafMeshVersion, error_estimate);
     return result;
 }
 

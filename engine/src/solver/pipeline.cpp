@@ -50,7 +50,12 @@ std::pair<std::vector<Triangle>, std::vector<int>> occluder_triangles(const Prep
 
 Pipeline::Pipeline(const Scene& scene, const SolveOptions& options, SolveObserver* observer,
                    const CancellationToken* cancel)
-    : scene_(scene), options_(options), observer_(observer), cancel_(cancel), start_(Clock::now()) {
+    : scene_(scene),
+      options_(options),
+      observer_(observer),
+      cancel_(cancel),
+      start_(Clock::now()),
+      snapshots_(observer, options.snapshot_interval_seconds, start_) {
     if (options.max_seconds) {
         deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(
                                  std::chrono::duration<double>(*options.max_seconds));
@@ -71,20 +76,15 @@ void Pipeline::report(const std::string& stage, double fraction, std::size_t ite
     p.elements = elements_;
     p.links = links_;
     last_progress_ = p;
+    snapshots_.note_progress(p);
     observer_->on_progress(p);
 }
 
-void Pipeline::publish_snapshot(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
-                                bool final) {
-    if (!observer_) return;
-    Snapshot snapshot;
-    snapshot.version = ++snapshot_version_;
-    snapshot.mesh_version = mesh_version;
-    snapshot.mesh = std::move(mesh);
-    snapshot.progress = last_progress_;
-    snapshot.progress.elapsed_seconds = elapsed();
-    snapshot.final = final;
-    observer_->on_snapshot(snapshot);
+void Pipeline::publish_final(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
+                             double error_estimate) {
+    Progress progress = last_progress_;
+    progress.error_estimate = error_estimate;
+    snapshots_.finish(std::move(mesh), mesh_version, progress);
 }
 
 SolverControl Pipeline::solving_control(double tolerance) const {
@@ -170,6 +170,32 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         prepared, patches, visibility, culling, transport_options,
         enclosed_patches(prepared, patches, visibility, solve_input.triangle_piece, options_.seed));
 
+    auto display_mesh = [&](const std::array<std::vector<double>, 3>& v) {
+        std::vector<double> display(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            display[i] = photometric(
+                Rgb{v[0][i], channels > 1 ? v[1][i] : 0, channels > 1 ? v[2][i] : 0}, channels);
+        }
+        return std::make_shared<const SolvedMesh>(
+            gouraud_mesh(patches, display, prepared.world_origin));
+    };
+    // Before any light is transported the solution is the emission; a viewer sees it while the
+    // form factors are computed.
+    if (observer_) {
+        std::array<std::vector<double>, 3> emitted;
+        for (int c = 0; c < channels; ++c) {
+            const auto ci = static_cast<std::size_t>(c);
+            emitted[ci].assign(n, 0.0);
+            for (std::size_t i = 0; i < n; ++i) {
+                const PatchGeometry& p = patches.patch(i);
+                const PreparedMaterial& m =
+                    prepared.materials[static_cast<std::size_t>(p.material)];
+                if (!p.back_side && !p.hidden) emitted[ci][i] = m.exitance_lm_m2[ci];
+            }
+        }
+        snapshots_.offer(display_mesh(emitted), 1);
+    }
+
     // Form factors, one receiver row per task; rays counted per thread.
     report("form factors", 0.05);
     std::vector<float> form_factors(n * n, 0.0f);
@@ -211,15 +237,6 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
             system.source[ci][i] = emitted + m.reflectance[ci] * luminaire_irradiance[i][ci];
         }
     }
-    auto display_mesh = [&](const std::array<std::vector<double>, 3>& v) {
-        std::vector<double> display(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            display[i] = photometric(
-                Rgb{v[0][i], channels > 1 ? v[1][i] : 0, channels > 1 ? v[2][i] : 0}, channels);
-        }
-        return std::make_shared<const SolvedMesh>(
-            gouraud_mesh(patches, display, prepared.world_origin));
-    };
 
     // Solve.
     const std::string method =
@@ -233,7 +250,7 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         SolverControl control = solving_control(options_.tolerance / 4);
         if (observer_) {
             control.snapshot = [&](const std::array<std::vector<double>, 3>& radiosity) {
-                publish_snapshot(display_mesh(radiosity), 1, false);
+                snapshots_.offer(display_mesh(radiosity), 1);
             };
         }
         outcome = solver->solve(system, control);
@@ -265,18 +282,19 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         });
     }
 
+    const auto mesh = display_mesh(outcome.radiosity);
+    // The radiosity is final from here on; the heartbeat shows it while the sensors gather.
+    snapshots_.offer(mesh, 1);
     report("sensors", 0.9, outcome.iterations, outcome.error_estimate, outcome.unshot_fraction);
     result.sensors = gather_sensors(prepared, transport, outcome.radiosity, channels, rays_);
     SurfaceSummary summary = summarise_surfaces(prepared, solved, channels);
     result.surfaces = std::move(summary.surfaces);
     result.stats.emitted_flux_lm = summary.emitted_flux_lm;
     result.stats.absorbed_flux_lm = summary.absorbed_flux_lm;
-    const auto mesh = display_mesh(outcome.radiosity);
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, std::string(solver ? solver->name() : method), n, outcome.iterations,
                  outcome.error_estimate, outcome.unshot_fraction, channels, stopped);
-    last_progress_.error_estimate = outcome.error_estimate;
-    publish_snapshot(mesh, 1, true);
+    publish_final(mesh, 1, outcome.error_estimate);
     return result;
 }
 

@@ -11,6 +11,7 @@
 
 #include "radiant/solve.h"
 #include "scene/prepared_scene.h"
+#include "solver/snapshot_publisher.h"
 #include "solver/solver.h"
 #include "visibility/visibility.h"
 
@@ -43,9 +44,9 @@ private:
         return (cancel_ && cancel_->cancelled()) || (deadline_ && Clock::now() >= *deadline_);
     }
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-    /// Hands the observer a snapshot of `mesh` (world coordinates, current radiosity).
-    void publish_snapshot(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
-                          bool final);
+    /// Publishes the result's mesh as the final snapshot, with the result's error estimate.
+    void publish_final(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
+                       double error_estimate);
     /// Control for the solving stage: `tolerance`, the deadline, cancellation, progress reports
     /// and the snapshot interval of the options.
     SolverControl solving_control(double tolerance) const;
@@ -62,7 +63,8 @@ private:
     std::optional<Clock::time_point> deadline_;
     std::uint64_t rays_ = 0;
     mutable Progress last_progress_;
-    std::uint64_t snapshot_version_ = 0;
+    /// Mutable like last_progress_: report() is const and hands it every progress.
+    mutable SnapshotPublisher snapshots_;
     std::size_t elements_ = 0, links_ = 0;
 };
 

@@ -29,7 +29,9 @@ namespace handlers {
 
 Response submit_job(ServiceContext& ctx, const Request& request);
 Response get_job(ServiceContext& ctx, const Request& request, const std::string& id);
-Response get_result(ServiceContext& ctx, const Request& request, const std::string& id);
+/// `?include=mesh` adds the solved mesh (a running job's: its latest snapshot's).
+Response get_result(ServiceContext& ctx, const Request& request, const std::string& id,
+                    const Query& query);
 Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id);
 Response list_jobs(ServiceContext& ctx, const Request& request, const Query& query);
 Response healthz(ServiceContext& ctx, const Request& request);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "radiant/server/job.h"
+#include "radiant/server/job_snapshot.h"
 #include "radiant/server/job_store.h"
 #include "radiant/server/metrics.h"
 
@@ -49,6 +50,9 @@ public:
 
     /// The job without its scene text; live progress for queued and running jobs. Thread-safe.
     std::optional<JobRecord> find(const std::string& id) const;
+    /// The latest snapshot: a running job's newest, a finished job's final one from the store;
+    /// null when there is none (queued, or failed before the first mesh). Thread-safe.
+    std::shared_ptr<const JobSnapshot> snapshot(const std::string& id) const;
     /// Scene name of a running job (the name of a finished one is in its result).
     std::string scene_name(const std::string& id) const;
 
@@ -68,17 +72,20 @@ private:
     struct LiveJob;
     void work();
     void run(const std::shared_ptr<LiveJob>& job);
+    /// Writes running jobs' changed progress to the store about once a second.
+    void write_progress();
 
     JobStore& store_;
     Metrics& metrics_;
     const JobQueueOptions options_;
 
     mutable std::mutex mutex_;
-    std::condition_variable wake_;
+    std::condition_variable wake_;           ///< workers: a job was queued, or shutdown
+    std::condition_variable progress_wake_;  ///< the progress writer: shutdown
     bool stopping_ = false;
     std::deque<std::shared_ptr<LiveJob>> queue_;
     std::unordered_map<std::string, std::shared_ptr<LiveJob>> live_;  ///< queued or running
-    std::vector<std::thread> workers_;
+    std::vector<std::thread> workers_;  ///< solvers and the progress writer
 };
 
 }  // namespace radiant::server

@@ -11,10 +11,17 @@
 #include <vector>
 
 #include "radiant/server/job.h"
+#include "radiant/server/job_snapshot.h"
 
 struct sqlite3;
 
 namespace radiant::server {
+
+/// A finished job's final snapshot: its place in the event sequence and encode(CompactMesh).
+struct StoredMesh {
+    SnapshotInfo info;  ///< progress is not stored here (the job's own progress is the same)
+    std::string blob;
+};
 
 /// Thread-safe: one connection guarded by a mutex. Every statement is short (a row or a page), so
 /// contention is not worth a connection pool at this scale. Throws std::runtime_error on SQLite
@@ -36,11 +43,14 @@ public:
 
     void mark_running(const std::string& id, UnixMillis started);
     void save_progress(const std::string& id, const JobProgress& progress);
-    /// Final state, progress and (optionally) the result document, in one transaction.
+    /// Final state, progress and (optionally) the result document (without its mesh) and the
+    /// solved mesh, in one transaction.
     void finish(const std::string& id, JobStatus status, UnixMillis finished,
                 const JobProgress& progress, const std::string& error,
-                const std::optional<std::string>& result_json);
+                const std::optional<std::string>& result_json,
+                const std::optional<StoredMesh>& mesh = std::nullopt);
     std::optional<std::string> result(const std::string& id) const;
+    std::optional<StoredMesh> mesh(const std::string& id) const;
 
     /// Jobs that were queued or running when the last process stopped, oldest first; their state
     /// goes back to queued (a solve that did not finish starts over).

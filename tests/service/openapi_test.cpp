@@ -1,0 +1,171 @@
+// The live server's answers against proto/openapi.yaml: every endpoint, its success and error
+// statuses, JSON bodies and event data, checked by tests/support/openapi_check.py.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "daemon.h"
+#include "service_scenes.h"
+#include "sse.h"
+#include "test_files.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using boost::beast::http::verb;
+using nlohmann::json;
+using radiant::test::http_call;
+using radiant::test::Reply;
+
+const char* verb_name(verb method) {
+    switch (method) {
+        case verb::post:
+            return "post";
+        case verb::delete_:
+            return "delete";
+        default:
+            return "get";
+    }
+}
+
+/// Sends requests and records each answer with the path template it exercises.
+class Recorder {
+public:
+    explicit Recorder(unsigned short port) : port_(port) {}
+
+    Reply call(verb method, const std::string& path_template, const std::string& target,
+               const std::string& body = "",
+               const std::map<std::string, std::string>& headers = {}) {
+        Reply r = http_call(port_, method, target, body, headers);
+        const auto type = r.headers.find("Content-Type");
+        exchanges_.push_back({{"method", verb_name(method)},
+                              {"path", path_template},
+                              {"status", r.status},
+                              {"content_type", type == r.headers.end() ? "" : type->second},
+                              {"body", r.body}});
+        if (type != r.headers.end() && type->second == "text/event-stream") {
+            for (const auto& e : radiant::test::parse_sse(r.body)) {
+                std::string component = e.name;
+                component[0] = static_cast<char>(std::toupper(component[0]));
+                exchanges_.push_back(
+                    {{"component", component + "Event"}, {"body", json::parse(e.data)}});
+                ++events_[e.name];
+            }
+        }
+        return r;
+    }
+    const json& exchanges() const { return exchanges_; }
+    int events(const std::string& name) const {
+        const auto it = events_.find(name);
+        return it == events_.end() ? 0 : it->second;
+    }
+
+private:
+    unsigned short port_;
+    json exchanges_ = json::array();
+    std::map<std::string, int> events_;
+};
+
+/// Polls the job (unrecorded) until its status is `want`.
+std::string wait_for(unsigned short port, const std::string& id, const std::string& want) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    std::string status;
+    while (std::chrono::steady_clock::now() < deadline) {
+        status = json::parse(http_call(port, verb::get, "/v1/jobs/" + id).body)["status"];
+        if (status == want) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return status;
+}
+
+TEST(OpenApi, EveryAnswerMatchesTheSpec) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("radiant_openapi_test_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    radiant::test::Daemon d(dir / "data", {"--queue-limit", "1", "--max-body-bytes", "100000"},
+                            dir / "radiantd.log");
+    Recorder rec(d.port());
+    const std::string jobs = "/v1/jobs", job = "/v1/jobs/{id}";
+    const std::string result = "/v1/jobs/{id}/result", events = "/v1/jobs/{id}/events";
+
+    // A finished job: submit, status, result with and without the mesh, its event stream.
+    const Reply posted = rec.call(verb::post, jobs, jobs, radiant::test::tiny_room());
+    ASSERT_EQ(posted.status, 202u);
+    const std::string done = json::parse(posted.body)["id"];
+    ASSERT_EQ(wait_for(d.port(), done, "done"), "done");
+    EXPECT_EQ(rec.call(verb::get, job, jobs + "/" + done).status, 200u);
+    EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + done + "/result").status, 200u);
+    EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + done + "/result?include=mesh").status, 200u);
+    EXPECT_EQ(rec.call(verb::get, events, jobs + "/" + done + "/events").status, 200u);
+    const Reply keyed =
+        rec.call(verb::post, jobs, jobs, radiant::test::tiny_room(), {{"Idempotency-Key", "k"}});
+    ASSERT_EQ(keyed.status, 202u);
+    // The queue holds one job: let this one finish before filling it on purpose below.
+    ASSERT_EQ(wait_for(d.port(), json::parse(keyed.body)["id"], "done"), "done");
+
+    // A running job, one queued behind it, and a full queue.
+    const std::string running =
+        json::parse(rec.call(verb::post, jobs, jobs, radiant::test::slow_room()).body)["id"];
+    ASSERT_EQ(wait_for(d.port(), running, "running"), "running");
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // a snapshot or two
+    const std::string queued =
+        json::parse(rec.call(verb::post, jobs, jobs, radiant::test::tiny_room()).body)["id"];
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, radiant::test::tiny_room()).status, 429u);
+    EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + running + "/result").status, 200u);
+    EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + running + "/result?include=mesh").status,
+              200u);
+    EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + queued + "/result").status, 404u);
+    EXPECT_EQ(rec.call(verb::get, jobs, jobs + "?limit=2").status, 200u);
+    EXPECT_EQ(rec.call(verb::delete_, job, jobs + "/" + queued).status, 200u);
+    EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + queued + "/result").status, 404u);
+    std::thread canceller([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(700));
+        http_call(d.port(), verb::delete_, "/v1/jobs/" + running);
+    });
+    EXPECT_EQ(rec.call(verb::get, events, jobs + "/" + running + "/events").status, 200u);
+    canceller.join();
+    EXPECT_EQ(rec.call(verb::delete_, job, jobs + "/" + running).status, 200u);
+
+    // Errors.
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, "{").status, 400u);
+    EXPECT_EQ(
+        rec.call(verb::post, jobs, jobs, R"({"format": "radiant-scene/1", "surfaces": []})").status,
+        400u);
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, std::string(100001, ' ')).status, 413u);
+    EXPECT_EQ(rec.call(verb::get, jobs, jobs + "?limit=0").status, 400u);
+    const std::string unknown = "/v1/jobs/00000000000000000000000000000000";
+    EXPECT_EQ(rec.call(verb::get, job, unknown).status, 404u);
+    EXPECT_EQ(rec.call(verb::delete_, job, unknown).status, 404u);
+    EXPECT_EQ(rec.call(verb::get, result, unknown + "/result").status, 404u);
+    EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + done + "/result?include=nope").status, 400u);
+    EXPECT_EQ(rec.call(verb::get, events, unknown + "/events").status, 404u);
+    EXPECT_EQ(rec.call(verb::get, "/healthz", "/healthz").status, 200u);
+    EXPECT_EQ(rec.call(verb::get, "/metrics", "/metrics").status, 200u);
+
+    // Every kind of event was seen, so each event schema was exercised too.
+    for (const char* name : {"progress", "mesh", "radiosity", "done"}) {
+        EXPECT_GT(rec.events(name), 0) << name;
+    }
+
+    const fs::path recorded = dir / "exchanges.json";
+    std::ofstream(recorded) << rec.exchanges().dump(1);
+    const std::string command =
+        "python3 '" RADIANT_SOURCE_DIR "/tests/support/openapi_check.py' '" RADIANT_SOURCE_DIR
+        "/proto/openapi.yaml' '" +
+        recorded.string() + "' > '" + (dir / "check.out").string() + "' 2>&1";
+    const int status = std::system(command.c_str());
+    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0)
+        << radiant::test::read_text(dir / "check.out");
+    fs::remove_all(dir);
+}
+
+}  // namespace
