@@ -96,6 +96,24 @@ INSTANTIATE_TEST_SUITE_P(
                                    }}),
     [](const auto& test_case) { return std::string(test_case.param.name); });
 
+// LM-63-1995 and -1991 headers, the header-less 1986 layout and Windows line ends read alike.
+TEST(IesReader, ReadsEveryHeaderVersion) {
+    const auto gamma = angles(0, 90, 10);
+    const std::string v2002 = ies_text(gamma, {0, 90}, lobe);
+    const PhotometricTable want = ies(v2002);
+    std::string crlf;
+    for (const char ch : v2002) crlf += ch == '\n' ? std::string("\r\n") : std::string(1, ch);
+    for (const std::string& text :
+         {std::string("IESNA:LM-63-1995") + v2002.substr(v2002.find('\n')),
+          std::string("IESNA91") + v2002.substr(v2002.find('\n')),
+          v2002.substr(v2002.find("TILT=")), crlf}) {
+        const PhotometricTable got = ies(text);
+        EXPECT_EQ(got.gamma_deg, want.gamma_deg);
+        EXPECT_EQ(got.c_deg, want.c_deg);
+        EXPECT_EQ(got.candela, want.candela);
+    }
+}
+
 TEST(IesReader, AppliesTheCandelaMultiplier) {
     const auto gamma = angles(0, 90, 10);
     const PhotometricTable table = ies(ies_text(gamma, {0}, lobe, 1000, 2.5));
