@@ -60,6 +60,22 @@ std::optional<std::string> non_finite(const nlohmann::json& j,
     return std::nullopt;
 }
 
+nlohmann::json vec3_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+nlohmann::json grid_json(const SensorGrid& grid) {
+    nlohmann::json points = nlohmann::json::array(), cells = nlohmann::json::array();
+    for (const Vec3& x : grid.points) points.push_back(vec3_json(x));
+    for (const auto& [iu, iv] : grid.cells) cells.push_back({iu, iv});
+    return {{"nu", grid.nu},
+            {"nv", grid.nv},
+            {"spacing", grid.spacing},
+            {"origin", vec3_json(grid.origin)},
+            {"u", vec3_json(grid.u)},
+            {"v", vec3_json(grid.v)},
+            {"points", std::move(points)},
+            {"cells", std::move(cells)}};
+}
+
 nlohmann::json document(const Result& result, const char* status, const std::string& error) {
     nlohmann::json doc = {
         {"format", "radiant-result/1"}, {"scene", result.scene}, {"status", status}};
@@ -76,12 +92,15 @@ nlohmann::json result_to_json(const Result& result) {
     doc["stats"] = stats_json(result.stats);
     nlohmann::json& sensors = doc["sensors"] = nlohmann::json::array();
     for (const SensorResult& s : result.sensors) {
-        sensors.push_back({{"name", s.name},
-                           {"illuminance", s.illuminance},
-                           {"min", s.min},
-                           {"max", s.max},
-                           {"average", s.average},
-                           {"uniformity", s.uniformity}});
+        nlohmann::json& set = sensors.emplace_back(nlohmann::json{{"name", s.name},
+                                                                  {"illuminance", s.illuminance},
+                                                                  {"min", s.min},
+                                                                  {"max", s.max},
+                                                                  {"average", s.average},
+                                                                  {"uniformity", s.uniformity},
+                                                                  {"u0", s.u0},
+                                                                  {"ud", s.ud}});
+        if (s.grid) set["grid"] = grid_json(*s.grid);
     }
     nlohmann::json& surfaces = doc["surfaces"] = nlohmann::json::array();
     for (const SurfaceResult& s : result.surfaces) {

@@ -10,6 +10,8 @@
 
 #include "import/surface_import.h"
 #include "json_text.h"
+#include "photometry/ies_reader.h"
+#include "photometry/ldt_reader.h"
 #include "radiant/solve.h"
 
 namespace radiant::proto {
@@ -35,19 +37,19 @@ std::string entity_of(const std::string& pointer) {
 /// Reads the structure of a scene document. Values that cannot be read are reported and replaced
 /// by placeholders, so that every entity keeps its index and later checks keep their pointers.
 class SceneReader {
-  public:
-      SceneReader(const ParseLimits& limits, std::optional<std::filesystem::path> scene_directory)
-          : limits_(limits), scene_directory_(std::move(scene_directory)) {}
+public:
+    SceneReader(const ParseLimits& limits, std::optional<std::filesystem::path> scene_directory)
+        : limits_(limits), scene_directory_(std::move(scene_directory)) {}
 
-      Scene read(const Json& root);
+    Scene read(const Json& root);
 
-      std::vector<Problem> problems_;
-      std::set<std::string> broken_;        ///< entities with a value that could not be read
-      std::set<std::size_t> grid_sensors_;  ///< sensor sets whose points come from a grid
-      /// Per engine surface: its document index and, for an imported model, the key naming it.
-      std::vector<std::pair<std::size_t, std::string>> surface_origins_;
+    std::vector<Problem> problems_;
+    std::set<std::string> broken_;        ///< entities with a value that could not be read
+    std::set<std::size_t> grid_sensors_;  ///< sensor sets whose points come from a grid
+    /// Per engine surface: its document index and, for an imported model, the key naming it.
+    std::vector<std::pair<std::size_t, std::string>> surface_origins_;
 
-  private:
+private:
     void report(const Ptr& p, std::string message, bool breaks = true) {
         std::string pointer = p.to_string();
         if (breaks) broken_.insert(entity_of(pointer));
@@ -148,7 +150,9 @@ class SceneReader {
     MeshGeometry mesh(const Json& j, const Ptr& p);
     BoxGeometry box(const Json& j, const Ptr& p);
     Luminaire luminaire(const Json& j, const Ptr& p);
+    std::optional<PhotometricTable> photometry(const Json& j, const Ptr& p);
     SensorSet sensor(const Json& j, const Ptr& p, std::size_t index);
+    Workplane workplane(const Json& j, const Ptr& p);
     std::vector<Vec3> grid(const Json& j, const Ptr& p);
     Settings settings(const Json& j, const Ptr& p);
 
@@ -379,40 +383,92 @@ BoxGeometry SceneReader::box(const Json& j, const Ptr& p) {
 Luminaire SceneReader::luminaire(const Json& j, const Ptr& p) {
     Luminaire l;
     if (!object(j, p, "a luminaire")) return l;
-    check_keys(j, p, {"name", "position", "flux", "distribution", "aim", "color"});
+    check_keys(j, p, {"name", "position", "flux", "distribution", "aim", "rotation", "color"});
     if (const Json* n = member(j, p, "name", true)) l.name = string(*n, p / "name", "name");
     if (const Json* v = member(j, p, "position", true))
         l.position = vec3(*v, p / "position", "position");
-    if (const Json* f = member(j, p, "flux", true)) l.flux_lm = number(*f, p / "flux", "flux");
     if (const Json* d = member(j, p, "distribution", false)) {
         if (*d == "isotropic" || *d == "lambertian") {
             l.distribution = *d == "isotropic" ? Distribution::isotropic : Distribution::lambertian;
-        } else if (d->is_object() && d->contains("ies")) {
-            report(p / "distribution", "IES distributions are not supported yet");
+        } else if (d->is_object()) {
+            l.distribution = Distribution::photometric;
+            l.photometry = photometry(*d, p / "distribution");
         } else {
-            report(p / "distribution", "distribution must be \"isotropic\" or \"lambertian\"");
+            report(p / "distribution",
+                   "distribution must be \"isotropic\", \"lambertian\", {\"ies\": ...} or "
+                   "{\"ldt\": ...}");
         }
     }
+    // A table carries its own flux; the simple distributions need one.
+    const bool table = l.distribution == Distribution::photometric;
+    if (const Json* f = member(j, p, "flux", !table)) l.flux_lm = number(*f, p / "flux", "flux");
     if (const Json* a = member(j, p, "aim", false)) l.aim = vec3(*a, p / "aim", "aim");
+    if (const Json* r = member(j, p, "rotation", false)) {
+        l.rotation_deg = number(*r, p / "rotation", "rotation");
+    }
     if (const Json* c = member(j, p, "color", false)) l.color = rgb(*c, p / "color", "color");
     return l;
+}
+
+std::optional<PhotometricTable> SceneReader::photometry(const Json& j, const Ptr& p) {
+    check_keys(j, p, {"ies", "ldt"});
+    if (j.contains("ies") == j.contains("ldt")) {
+        report(p, "a photometric distribution needs exactly one of ies or ldt");
+        return std::nullopt;
+    }
+    const char* key = j.contains("ies") ? "ies" : "ldt";
+    const std::string text = string(j[key], p / key, key);
+    if (text.empty()) {
+        if (j[key].is_string()) report(p / key, std::string("the ") + key + " text is empty");
+        return std::nullopt;
+    }
+    auto table = j.contains("ies") ? read_ies(text) : read_ldt(text);
+    if (auto* problem = std::get_if<std::string>(&table)) {
+        report(p / key, std::move(*problem));
+        return std::nullopt;
+    }
+    return std::get<PhotometricTable>(std::move(table));
 }
 
 SensorSet SceneReader::sensor(const Json& j, const Ptr& p, std::size_t index) {
     SensorSet s;
     if (!object(j, p, "a sensor set")) return s;
-    check_keys(j, p, {"name", "normal", "points", "grid"});
+    check_keys(j, p, {"name", "normal", "points", "grid", "workplane"});
     if (const Json* n = member(j, p, "name", true)) s.name = string(*n, p / "name", "name");
-    if (const Json* n = member(j, p, "normal", true)) s.normal = vec3(*n, p / "normal", "normal");
-    if (j.contains("points") == j.contains("grid")) {
-        report(p, "a sensor set needs exactly one of points or grid");
+    // A work plane faces up unless told otherwise.
+    if (const Json* n = member(j, p, "normal", !j.contains("workplane"))) {
+        s.normal = vec3(*n, p / "normal", "normal");
+    }
+    const int kinds =
+        int{j.contains("points")} + int{j.contains("grid")} + int{j.contains("workplane")};
+    if (kinds != 1) {
+        report(p, "a sensor set needs exactly one of points, grid or workplane");
     } else if (j.contains("points")) {
         s.points = points(j["points"], p / "points", "points");
-    } else {
+    } else if (j.contains("grid")) {
         grid_sensors_.insert(index);
         s.points = grid(j["grid"], p / "grid");
+    } else {
+        s.workplane = workplane(j["workplane"], p / "workplane");
     }
     return s;
+}
+
+Workplane SceneReader::workplane(const Json& j, const Ptr& p) {
+    Workplane w;
+    if (!object(j, p, "workplane")) return w;
+    check_keys(j, p, {"surfaces", "height", "border", "spacing"});
+    if (const Json* names = member(j, p, "surfaces", true);
+        names && array(*names, p / "surfaces", "surfaces")) {
+        for (std::size_t k = 0; k < names->size(); ++k) {
+            w.surfaces.push_back(string((*names)[k], p / "surfaces" / k, "a surface name"));
+        }
+    }
+    for (auto [key, value] : {std::pair{"height", &w.height}, std::pair{"border", &w.border},
+                              std::pair{"spacing", &w.spacing}}) {
+        if (const Json* x = member(j, p, key, false)) *value = number(*x, p / key, key);
+    }
+    return w;
 }
 
 /// Cell centres of the grid, row-major with u fastest (contract §2).
@@ -539,6 +595,8 @@ ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits,
         if (reader.broken_.contains(entity_of(p.pointer))) continue;
         outcome.problems.push_back(std::move(p));
     }
+    // Work planes need the checked floors.
+    if (outcome.problems.empty()) outcome.problems = expand_workplanes(scene, limits.scene);
     if (outcome.problems.empty()) outcome.scene = std::move(scene);
     return outcome;
 }

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "radiant/scene.h"
 
 namespace radiant {
@@ -85,11 +87,28 @@ TEST(CheckScene, UnknownMaterialAndInvertedBox) {
 
 TEST(CheckScene, ZeroNormalAndAim) {
     Scene scene = unit_square();
-    scene.sensors.push_back({"s", {{0, 0, 1}}, {0, 0, 0}});
+    scene.sensors.push_back({"s", {{0, 0, 1}}, {0, 0, 0}, {}, {}});
     Luminaire l;
+    l.flux_lm = 1;
     l.aim = {0, 0, 0};
     scene.luminaires.push_back(l);
     EXPECT_EQ(pointers(scene), (Pointers{"/luminaires/0/aim", "/sensors/0/normal"}));
+}
+
+// A table carries its own flux; its angles must describe one of the file symmetries.
+TEST(CheckScene, PhotometricTables) {
+    Scene scene = unit_square();
+    Luminaire l;
+    l.distribution = Distribution::photometric;
+    l.photometry = PhotometricTable{{0, 90}, {0, 90}, {100, 0, 100, 0}};
+    scene.luminaires = {l};
+    EXPECT_EQ(pointers(scene), Pointers{});
+    scene.luminaires[0].photometry->c_deg = {0, 45};
+    scene.luminaires[0].rotation_deg = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(pointers(scene), (Pointers{"/luminaires/0/distribution", "/luminaires/0/rotation"}));
+    scene.luminaires[0].photometry = PhotometricTable{{0, 90}, {0}, {0, 0}};
+    scene.luminaires[0].rotation_deg = 0;
+    EXPECT_EQ(pointers(scene), Pointers{"/luminaires/0/distribution"});
 }
 
 TEST(CheckScene, Settings) {

@@ -13,7 +13,7 @@ Result converged() {
     r.status = SolveStatus::converged;
     r.stats.method = "jacobi";
     r.stats.patches = 12;
-    r.sensors.push_back({"wp", {1, 3}, 1, 3, 2, 0.5});
+    r.sensors.push_back({"wp", {1, 3}, 1, 3, 2, 0.5, 0.5, 1.0 / 3, {}});
     r.surfaces.push_back({"floor", 16, 500, 100});
     return r;
 }
@@ -28,7 +28,31 @@ TEST(ResultJson, MapsEveryField) {
     EXPECT_EQ(j["stats"]["patches"], 12);
     EXPECT_EQ(j["sensors"][0]["illuminance"], nlohmann::json({1.0, 3.0}));
     EXPECT_EQ(j["sensors"][0]["uniformity"], 0.5);
+    EXPECT_EQ(j["sensors"][0]["u0"], 0.5);
+    EXPECT_EQ(j["sensors"][0]["ud"], 1.0 / 3);
+    EXPECT_FALSE(j["sensors"][0].contains("grid"));
     EXPECT_EQ(j["surfaces"][0]["area"], 16.0);
+}
+
+TEST(ResultJson, WorkPlaneGrid) {
+    Result r = converged();
+    SensorGrid grid;
+    grid.nu = 2;
+    grid.nv = 1;
+    grid.spacing = 0.5;
+    grid.origin = {0, 0, 0.8};
+    grid.u = {1, 0, 0};
+    grid.v = {0, 0.5, 0};
+    grid.cells = {{0, 0}, {1, 0}};
+    grid.points = {{0.25, 0.25, 0.8}, {0.75, 0.25, 0.8}};
+    r.sensors[0].grid = grid;
+    const nlohmann::json j = result_to_json(r)["sensors"][0]["grid"];
+    EXPECT_EQ(j["nu"], 2);
+    EXPECT_EQ(j["nv"], 1);
+    EXPECT_EQ(j["spacing"], 0.5);
+    EXPECT_EQ(j["origin"], nlohmann::json({0.0, 0.0, 0.8}));
+    EXPECT_EQ(j["cells"], nlohmann::json::parse("[[0,0],[1,0]]"));
+    EXPECT_EQ(j["points"][1], nlohmann::json({0.75, 0.25, 0.8}));
 }
 
 TEST(ResultJson, MeshIsOptional) {

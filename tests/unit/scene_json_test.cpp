@@ -162,12 +162,19 @@ TEST(SceneJson, SurfaceLimitPointsAtTheArray) {
     EXPECT_EQ(pointers(parse_scene(kMinimal, limits)), (std::vector<std::string>{"/surfaces"}));
 }
 
-TEST(SceneJson, IesIsRefusedAsNotYetSupported) {
+TEST(SceneJson, IesTextThatIsNoFileIsRefusedAtItsPointer) {
     const ParseOutcome outcome = parse_patched(
         R"({"luminaires": [{"name": "l", "position": [0,0,1], "flux": 1, "distribution": {"ies": "x"}}]})");
     ASSERT_EQ(outcome.problems.size(), 1u);
+    EXPECT_EQ(outcome.problems[0].pointer, "/luminaires/0/distribution/ies");
+    EXPECT_EQ(outcome.problems[0].message, "ies: no TILT= line: not an IES LM-63 file");
+}
+
+TEST(SceneJson, PhotometricDistributionNeedsOneFile) {
+    const ParseOutcome outcome = parse_patched(
+        R"({"luminaires": [{"name": "l", "position": [0,0,1], "distribution": {"ies": "x", "ldt": "y"}}]})");
+    ASSERT_EQ(outcome.problems.size(), 1u);
     EXPECT_EQ(outcome.problems[0].pointer, "/luminaires/0/distribution");
-    EXPECT_NE(outcome.problems[0].message.find("not supported yet"), std::string::npos);
 }
 
 TEST(SceneJson, UnreadableFile) {

@@ -180,7 +180,7 @@ TEST(Metamorphic, ScalingSourcesScalesResults) {
     for (auto& m : brighter.materials) {
         if (m.emission) m.emission->value *= 10;
     }
-    for (auto& l : brighter.luminaires) l.flux_lm *= 10;
+    for (auto& l : brighter.luminaires) *l.flux_lm *= 10;
     const Result r = solve(brighter, invariance_options());
     ASSERT_EQ(base.status, SolveStatus::converged) << base.error;
     ASSERT_EQ(r.status, SolveStatus::converged) << r.error;

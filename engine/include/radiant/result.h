@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "radiant/scene.h"
 #include "radiant/vec3.h"
 
 namespace radiant {
@@ -34,8 +35,11 @@ struct SolveStats {
 
 struct SensorResult {
     std::string name;
-    std::vector<double> illuminance;  ///< lux, in the order of the points
+    std::vector<double> illuminance;                       ///< lux, in the order of the points
     double min = 0, max = 0, average = 0, uniformity = 0;  ///< uniformity = min / average
+    double u0 = 0;                   ///< EN 12464-1 U₀ = min / average (the same as `uniformity`)
+    double ud = 0;                   ///< U_d = min / max
+    std::optional<SensorGrid> grid;  ///< work planes: the grid, in metres
 };
 
 struct SurfaceResult {
@@ -48,11 +52,11 @@ struct SurfaceResult {
 /// The solved patch mesh for display: triangles, shaded with per-vertex radiosity (Gouraud).
 /// Vertices are never shared between surfaces or across creases.
 struct SolvedMesh {
-    std::vector<Vec3> vertices;                ///< metres
+    std::vector<Vec3> vertices;  ///< metres
     std::vector<std::array<int, 3>> triangles;
-    std::vector<int> triangle_surface;         ///< index into Result::surfaces
-    std::vector<double> triangle_radiosity;    ///< lm/m² (luminance for RGB)
-    std::vector<double> vertex_radiosity;      ///< lm/m², interpolated/extrapolated, ≥ 0
+    std::vector<int> triangle_surface;       ///< index into Result::surfaces
+    std::vector<double> triangle_radiosity;  ///< lm/m² (luminance for RGB)
+    std::vector<double> vertex_radiosity;    ///< lm/m², interpolated/extrapolated, ≥ 0
 };
 
 struct Result {

@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "radiant/photometry.h"
 #include "radiant/vec3.h"
 
 namespace radiant {
@@ -24,13 +25,13 @@ using Rgb = std::array<double, 3>;
 struct Emission {
     enum class Kind { exitance, flux };
     Kind kind = Kind::exitance;
-    double value = 0;          ///< lm/m² for `exitance`, lm for `flux` (spread over all area using it)
+    double value = 0;  ///< lm/m² for `exitance`, lm for `flux` (spread over all area using it)
     std::optional<Rgb> color;  ///< relative colour; normalised so that its luminance is 1
 };
 
 struct Material {
     std::string name;
-    Rgb reflectance{0, 0, 0};   ///< each channel in [0, 1)
+    Rgb reflectance{0, 0, 0};      ///< each channel in [0, 1)
     bool rgb_reflectance = false;  ///< true when the input gave [r,g,b] rather than one number
     std::optional<Emission> emission;
     bool two_sided = false;  ///< back side reflects too (it never emits)
@@ -40,7 +41,8 @@ using Polygon = std::vector<Vec3>;
 
 struct MeshGeometry {
     std::vector<Vec3> vertices;
-    std::vector<std::vector<int>> faces;  ///< polygonal faces, counter-clockwise seen from the front
+    std::vector<std::vector<int>>
+        faces;  ///< polygonal faces, counter-clockwise seen from the front
 };
 
 struct BoxGeometry {
@@ -54,21 +56,46 @@ struct Surface {
     std::variant<Polygon, MeshGeometry, BoxGeometry> geometry;
 };
 
-enum class Distribution { isotropic, lambertian };
+enum class Distribution { isotropic, lambertian, photometric };
 
 struct Luminaire {
     std::string name;
     Vec3 position;
-    double flux_lm = 0;
+    /// Emitted flux. Required for isotropic and lambertian luminaires; a photometric table is
+    /// scaled to emit it, and without it emits the flux of its own intensities.
+    std::optional<double> flux_lm;
     Distribution distribution = Distribution::isotropic;
-    Vec3 aim{0, 0, -1};  ///< axis of a lambertian distribution
+    Vec3 aim{0, 0, -1};  ///< axis of a lambertian distribution; nadir (γ = 0) of a photometric one
+    double rotation_deg = 0;  ///< photometric: turns the C0 plane about `aim`, like increasing C
+    std::optional<PhotometricTable> photometry;  ///< set for Distribution::photometric
     std::optional<Rgb> color;
+};
+
+/// An EN 12464-1 work plane: a grid over named floor surfaces (their upward-facing horizontal
+/// faces), lifted by `height`, kept `border` away from the floor's edges. Scene units.
+struct Workplane {
+    std::vector<std::string> surfaces;
+    std::optional<double> height;   ///< default 0.8 m
+    std::optional<double> border;   ///< default 0.5 m
+    std::optional<double> spacing;  ///< default p = 0.2·5^log10(d), d the longer side in metres
+};
+
+/// Where a work plane's points lie: nu × nv cells over the rectangle origin + [0,1]·u + [0,1]·v;
+/// points are cell centres inside the floor and outside furniture.
+struct SensorGrid {
+    int nu = 0, nv = 0;
+    double spacing = 0;  ///< the target spacing p (scene units; metres in a result)
+    Vec3 origin, u, v;   ///< the area's corner and sides (scene units; metres in a result)
+    std::vector<std::array<int, 2>> cells;  ///< (iu, iv) of each point, in the order of points
+    std::vector<Vec3> points;               ///< the points (scene units; metres in a result)
 };
 
 struct SensorSet {
     std::string name;
     std::vector<Vec3> points;  ///< grids are expanded to their cell centres, row-major, u fastest
     Vec3 normal{0, 0, 1};
+    std::optional<Workplane> workplane;  ///< points come from expand_workplanes()
+    std::optional<SensorGrid> grid;      ///< set by expand_workplanes()
 };
 
 struct Settings {
@@ -104,5 +131,10 @@ struct SceneLimits {
 /// Semantic checks the JSON schema cannot express (geometry, references, ranges, finiteness).
 /// Returns an empty list when the scene can be solved. Thread-safe; pure.
 std::vector<Problem> check_scene(const Scene& scene, const SceneLimits& limits = {});
+
+/// Fills the points and grid of every work-plane sensor set of a scene that passed check_scene().
+/// Problems (a floor without an upward-facing horizontal face, no point left, too many points)
+/// point at the sensor set. Thread-safe for distinct scenes.
+std::vector<Problem> expand_workplanes(Scene& scene, const SceneLimits& limits = {});
 
 }  // namespace radiant

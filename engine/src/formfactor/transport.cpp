@@ -5,8 +5,8 @@
 
 #include "formfactor/luminaire_light.h"
 #include "formfactor/point_polygon.h"
-#include "formfactor/shadow_rays.h"
 #include "formfactor/receiver_rule.h"
+#include "formfactor/shadow_rays.h"
 #include "geometry/random.h"
 
 namespace radiant {
@@ -31,7 +31,8 @@ Transport::Transport(const PreparedScene& scene, const PatchMesh& patches,
 
 bool Transport::patch_emits(std::size_t j) const {
     const PatchGeometry& p = patches_.patch(j);
-    return !p.back_side && !p.hidden && scene_.materials[static_cast<std::size_t>(p.material)].emits();
+    return !p.back_side && !p.hidden &&
+           scene_.materials[static_cast<std::size_t>(p.material)].emits();
 }
 
 // Light passes from j to i only when each lies (partly) in front of the other.
@@ -40,12 +41,12 @@ bool Transport::faces_each_other(std::size_t i, std::size_t j) const {
     const PatchGeometry& b = patches_.patch(j);
     if (a.hidden || b.hidden) return false;
     const double eps = 1e-9 * (a.diameter_m + b.diameter_m);
-    const bool b_in_front_of_a = std::any_of(b.vertices.begin(), b.vertices.end(), [&](const Vec3& v) {
-        return dot(v - a.vertices[0], a.normal) > eps;
-    });
-    const bool a_in_front_of_b = std::any_of(a.vertices.begin(), a.vertices.end(), [&](const Vec3& v) {
-        return dot(v - b.vertices[0], b.normal) > eps;
-    });
+    const bool b_in_front_of_a =
+        std::any_of(b.vertices.begin(), b.vertices.end(),
+                    [&](const Vec3& v) { return dot(v - a.vertices[0], a.normal) > eps; });
+    const bool a_in_front_of_b =
+        std::any_of(a.vertices.begin(), a.vertices.end(),
+                    [&](const Vec3& v) { return dot(v - b.vertices[0], b.normal) > eps; });
     return b_in_front_of_a && a_in_front_of_b;
 }
 
@@ -115,40 +116,22 @@ void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays) 
     }
     for (std::size_t m = 0; m < sampled_sources.size(); ++m) {
         double sum = 0;
-        for (std::size_t k = 0; k < points; ++k) sum += rule[k].weight * scale[k] * sampled[m * points + k];
+        for (std::size_t k = 0; k < points; ++k)
+            sum += rule[k].weight * scale[k] * sampled[m * points + k];
         row[sampled_sources[m]] = static_cast<float>(sum / rcv.area_m2);
     }
 }
 
 Rgb Transport::luminaire_irradiance_on_patch(std::size_t i, std::uint64_t& rays) const {
-    Rgb e{0, 0, 0};
     const PatchGeometry& p = patches_.patch(i);
-    if (p.hidden) return e;
-    const auto& rule = rules_[i];
-    const double eps = visibility_.epsilon();
-    for (std::size_t li = 0; li < scene_.luminaires.size(); ++li) {
-        const PreparedLuminaire& l = scene_.luminaires[li];
-        if (dot(l.position - p.vertices[0], p.normal) <= 0) continue;
-        const double fraction = flux_fraction_on(l, p.vertices);
-        if (fraction <= 0) continue;
-        double visible = 1;
-        if (culling_.maybe_blocked_from_point(l.position, Vec3{}, p.piece, p.vertices, p.normal)) {
-            // Weight each quadrature point by its share of the direct kernel I·cos/d².
-            double seen = 0, total = 0;
-            for (const QuadraturePoint& q : rule) {
-                const Vec3 d = l.position - q.position;
-                const double d2 = length_squared(d);
-                const double k = q.weight * intensity_per_lm(l, -d / std::sqrt(d2)) *
-                                 std::max(0.0, dot(p.normal, d)) / (d2 * std::sqrt(d2));
-                total += k;
-                if (visibility_.visible(q.position + p.normal * eps, l.position)) seen += k;
-                ++rays;
-            }
-            visible = total > 0 ? seen / total : 0;
-        }
-        for (int c = 0; c < 3; ++c) e[c] += l.flux_lm[c] * fraction * visible / p.area_m2;
-    }
-    return e;
+    if (p.hidden) return Rgb{0, 0, 0};
+    return luminaire_irradiance_on_polygon(
+        scene_, visibility_, p.vertices, p.normal, p.area_m2, rules_[i],
+        [&](const PreparedLuminaire& l) {
+            return culling_.maybe_blocked_from_point(l.position, Vec3{}, p.piece, p.vertices,
+                                                     p.normal);
+        },
+        rays);
 }
 
 Rgb Transport::luminaire_irradiance_at(const Vec3& x, const Vec3& n, std::uint64_t /*key*/,

@@ -173,10 +173,11 @@ void ElementTree::subdivide(int e) {
 void ElementTree::light_from_luminaires(Element& e, std::uint64_t& rays) const {
     e.luminaire_irradiance = {0, 0, 0};
     if (scene_.luminaires.empty() || e.cluster) return;
-    for (const SamplePoint& s : e.samples) {
-        const Rgb h = luminaire_irradiance_at(scene_, visibility_, s.position, s.normal, rays);
-        for (int c = 0; c < 3; ++c) e.luminaire_irradiance[c] += s.weight * h[c] / e.area_m2;
-    }
+    std::vector<QuadraturePoint> points;
+    for (const SamplePoint& s : e.samples) points.push_back({s.position, s.weight});
+    e.luminaire_irradiance = luminaire_irradiance_on_polygon(
+        scene_, visibility_, e.polygon, e.normal, e.area_m2, points,
+        [](const PreparedLuminaire&) { return true; }, rays);
 }
 
 std::uint64_t ElementTree::light_from(std::size_t first) {

@@ -4,6 +4,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "photometry/intensity_table.h"
 #include "radiant/scene.h"
 
 namespace radiant {
@@ -33,7 +34,7 @@ std::string at(const std::string& base, std::size_t index) {
 }
 
 class Checker {
-  public:
+public:
     explicit Checker(std::vector<Problem>& problems) : problems_(problems) {}
 
     void report(std::string pointer, std::string message) {
@@ -110,7 +111,7 @@ class Checker {
         }
     }
 
-  private:
+private:
     std::vector<Problem>& problems_;
 };
 
@@ -200,11 +201,43 @@ void check_luminaires(const Scene& scene, Checker& check) {
         const Luminaire& l = scene.luminaires[i];
         const std::string base = at("/luminaires", i);
         check.finite(l.position, base + "/position");
-        if (!std::isfinite(l.flux_lm) || l.flux_lm < 0) {
+        if (l.flux_lm && (!std::isfinite(*l.flux_lm) || *l.flux_lm < 0)) {
             check.report(base + "/flux", "flux must be a finite number >= 0");
+        }
+        if (!l.flux_lm && l.distribution != Distribution::photometric) {
+            check.report(base + "/flux", "flux is required unless the distribution is a table");
+        }
+        if (l.distribution == Distribution::photometric) {
+            const std::string problem =
+                l.photometry ? photometric_table_problem(*l.photometry) : "missing table";
+            if (!problem.empty()) check.report(base + "/distribution", problem);
+        }
+        if (!std::isfinite(l.rotation_deg)) {
+            check.report(base + "/rotation", "rotation must be a finite number");
         }
         check.non_zero(l.aim, base + "/aim", "aim");
         if (l.color) check.color(*l.color, base + "/color");
+    }
+}
+
+void check_workplane(const Scene& scene, const Workplane& w, const std::string& base,
+                     Checker& check) {
+    if (w.surfaces.empty()) check.report(base + "/surfaces", "name at least one floor surface");
+    for (std::size_t k = 0; k < w.surfaces.size(); ++k) {
+        const bool known = std::any_of(scene.surfaces.begin(), scene.surfaces.end(),
+                                       [&](const Surface& s) { return s.name == w.surfaces[k]; });
+        if (!known) {
+            check.report(at(base + "/surfaces", k), "unknown surface \"" + w.surfaces[k] + "\"");
+        }
+    }
+    if (w.height && !std::isfinite(*w.height)) {
+        check.report(base + "/height", "height must be a finite number");
+    }
+    if (w.border && !(std::isfinite(*w.border) && *w.border >= 0)) {
+        check.report(base + "/border", "border must be a finite number >= 0");
+    }
+    if (w.spacing && !(std::isfinite(*w.spacing) && *w.spacing > 0)) {
+        check.report(base + "/spacing", "spacing must be a finite number > 0");
     }
 }
 
@@ -212,8 +245,11 @@ void check_sensors(const Scene& scene, Checker& check) {
     for (std::size_t i = 0; i < scene.sensors.size(); ++i) {
         const SensorSet& s = scene.sensors[i];
         const std::string base = at("/sensors", i);
-        if (s.points.empty())
+        if (s.workplane) {
+            check_workplane(scene, *s.workplane, base + "/workplane", check);
+        } else if (s.points.empty()) {
             check.report(base + "/points", "a sensor set needs at least one point");
+        }
         check.finite_all(s.points, base + "/points");
         check.non_zero(s.normal, base + "/normal", "normal");
     }

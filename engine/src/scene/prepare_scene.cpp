@@ -1,7 +1,9 @@
 #include "scene/prepared_scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <numbers>
 #include <unordered_map>
 
 #include "formfactor/quadrature.h"
@@ -62,7 +64,8 @@ std::vector<RawPolygon> raw_polygons(const Scene& scene, const std::vector<int>&
         } else if (const auto* mesh = std::get_if<MeshGeometry>(&surface.geometry)) {
             for (const auto& face : mesh->faces) {
                 std::vector<Vec3> v;
-                for (const int k : face) v.push_back(mesh->vertices[static_cast<std::size_t>(k)] * s);
+                for (const int k : face)
+                    v.push_back(mesh->vertices[static_cast<std::size_t>(k)] * s);
                 raw.push_back({std::move(v), si, mi});
             }
         } else {
@@ -83,6 +86,30 @@ Rgb normalized_color(const std::optional<Rgb>& color) {
     const double y = luminance(*color);
     if (!(y > 0)) return {1, 1, 1};
     return {(*color)[0] / y, (*color)[1] / y, (*color)[2] / y};
+}
+
+// The C0 plane of a luminaire aimed at `aim`: the x axis for a luminaire aimed straight down,
+// carried along by the smallest rotation that turns straight down to `aim`, then turned by
+// `rotation_deg` towards C90 (counter-clockwise seen from behind the luminaire).
+Vec3 c0_axis(const Vec3& aim, double rotation_deg) {
+    const Vec3 down{0, 0, -1}, x{1, 0, 0};
+    const double c = dot(down, aim);
+    Vec3 c0 = c < -1 + 1e-12 ? x
+                             : x + cross(cross(down, aim), x) +
+                                   cross(cross(down, aim), cross(cross(down, aim), x)) / (1 + c);
+    c0 = normalized(c0 - aim * dot(aim, c0));
+    const Vec3 c90 = cross(c0, aim);
+    const double r = rotation_deg * std::numbers::pi / 180;
+    return normalized(c0 * std::cos(r) + c90 * std::sin(r));
+}
+
+SensorGrid grid_in_meters(SensorGrid grid, double meters_per_unit) {
+    grid.spacing *= meters_per_unit;
+    grid.origin = grid.origin * meters_per_unit;
+    grid.u = grid.u * meters_per_unit;
+    grid.v = grid.v * meters_per_unit;
+    for (Vec3& x : grid.points) x = x * meters_per_unit;
+    return grid;
 }
 
 }  // namespace
@@ -172,9 +199,16 @@ PreparedScene prepare_scene(const Scene& scene) {
         pl.name = l.name;
         pl.position = l.position * s - out.world_origin;
         const Rgb c = normalized_color(l.color);
-        for (int k = 0; k < 3; ++k) pl.flux_lm[k] = l.flux_lm * c[k];
         pl.distribution = l.distribution;
         pl.aim = normalized(l.aim);
+        double flux_lm = l.flux_lm.value_or(0);
+        if (l.distribution == Distribution::photometric && l.photometry) {
+            pl.table = std::make_shared<const IntensityTable>(*l.photometry);
+            flux_lm = l.flux_lm.value_or(pl.table->flux_lm());
+            pl.c0_axis = c0_axis(pl.aim, l.rotation_deg);
+            pl.c90_axis = cross(pl.c0_axis, pl.aim);
+        }
+        for (int k = 0; k < 3; ++k) pl.flux_lm[k] = flux_lm * c[k];
         out.luminaires.push_back(std::move(pl));
     }
     for (const SensorSet& set : scene.sensors) {
@@ -182,6 +216,7 @@ PreparedScene prepare_scene(const Scene& scene) {
         ps.name = set.name;
         for (const Vec3& p : set.points) ps.points.push_back(p * s - out.world_origin);
         ps.normal = normalized(set.normal);
+        if (set.grid) ps.grid = grid_in_meters(*set.grid, s);
         out.sensors.push_back(std::move(ps));
     }
     return out;

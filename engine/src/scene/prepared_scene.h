@@ -4,9 +4,12 @@
 #pragma once
 
 #include <array>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "photometry/intensity_table.h"
 #include "radiant/scene.h"
 
 namespace radiant {
@@ -16,7 +19,9 @@ struct PreparedMaterial {
     Rgb reflectance{0, 0, 0};
     Rgb exitance_lm_m2{0, 0, 0};  ///< front side only
     bool two_sided = false;
-    bool emits() const { return exitance_lm_m2[0] > 0 || exitance_lm_m2[1] > 0 || exitance_lm_m2[2] > 0; }
+    bool emits() const {
+        return exitance_lm_m2[0] > 0 || exitance_lm_m2[1] > 0 || exitance_lm_m2[2] > 0;
+    }
 };
 
 /// A planar convex piece of one input surface (front side; back sides are made by meshing).
@@ -34,19 +39,24 @@ struct PreparedLuminaire {
     Rgb flux_lm{0, 0, 0};
     Distribution distribution = Distribution::isotropic;
     Vec3 aim{0, 0, -1};  ///< unit
+    /// Photometric luminaires: the table (shared by copies of the scene) and the unit directions
+    /// of the C0 and C90 planes, both perpendicular to `aim`.
+    std::shared_ptr<const IntensityTable> table;
+    Vec3 c0_axis, c90_axis;
 };
 
 struct PreparedSensorSet {
     std::string name;
-    std::vector<Vec3> points;  ///< local frame
-    Vec3 normal;               ///< unit
+    std::vector<Vec3> points;        ///< local frame
+    Vec3 normal;                     ///< unit
+    std::optional<SensorGrid> grid;  ///< work planes: world frame, metres
 };
 
 struct PreparedScene {
     std::string name;
-    int channels = 1;      ///< 1 for gray scenes, 3 when any colour differs between channels
-    Vec3 world_origin;     ///< world position (metres) of the local frame's origin
-    double diagonal_m = 0; ///< bounding-box diagonal of all geometry
+    int channels = 1;       ///< 1 for gray scenes, 3 when any colour differs between channels
+    Vec3 world_origin;      ///< world position (metres) of the local frame's origin
+    double diagonal_m = 0;  ///< bounding-box diagonal of all geometry
     double total_area_m2 = 0;
     std::vector<PreparedMaterial> materials;
     std::vector<std::string> surface_names;

@@ -16,6 +16,16 @@ void fill_sensor_statistics(SensorResult& r) {
     for (const double e : r.illuminance) sum += e;
     r.average = sum / static_cast<double>(r.illuminance.size());
     r.uniformity = r.average > 0 ? r.min / r.average : 0;
+    r.u0 = r.uniformity;
+    r.ud = r.max > 0 ? r.min / r.max : 0;
+}
+
+SensorResult sensor_result_for(const PreparedSensorSet& set) {
+    SensorResult r;
+    r.name = set.name;
+    r.grid = set.grid;
+    r.illuminance.resize(set.points.size());
+    return r;
 }
 
 std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Transport& transport,
@@ -26,20 +36,20 @@ std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Trans
     const std::size_t n = transport.patches().size();
     for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
         const PreparedSensorSet& set = scene.sensors[s];
-        SensorResult r;
-        r.name = set.name;
-        r.illuminance.resize(set.points.size());
+        SensorResult r = sensor_result_for(set);
         tbb::parallel_for(std::size_t{0}, set.points.size(), [&](std::size_t k) {
             std::uint64_t& local_rays = ray_count.local();
             const Vec3& x = set.points[k];
             const std::uint64_t key = (static_cast<std::uint64_t>(s) << 40) ^ (k << 1) ^ 1u;
             Rgb e = transport.luminaire_irradiance_at(x, set.normal, key, local_rays);
             for (std::size_t j = 0; j < n; ++j) {
-                const double b = channels == 1 ? radiosity[0][j]
-                                               : std::max({radiosity[0][j], radiosity[1][j], radiosity[2][j]});
+                const double b =
+                    channels == 1 ? radiosity[0][j]
+                                  : std::max({radiosity[0][j], radiosity[1][j], radiosity[2][j]});
                 if (!(b > 0)) continue;
                 const double f = transport.point_to_patch(x, set.normal, j, key, local_rays);
-                for (int c = 0; c < channels; ++c) e[c] += f * radiosity[static_cast<std::size_t>(c)][j];
+                for (int c = 0; c < channels; ++c)
+                    e[c] += f * radiosity[static_cast<std::size_t>(c)][j];
             }
             r.illuminance[k] = channels == 1 ? e[0] : luminance(e);
         });

@@ -16,7 +16,10 @@ std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Trans
                                          const std::array<std::vector<double>, 3>& radiosity,
                                          int channels, std::uint64_t& rays);
 
-/// min, max, average and uniformity (min/average) of a sensor set's values.
+/// The result of one sensor set before its values: its name and, for a work plane, its grid.
+SensorResult sensor_result_for(const PreparedSensorSet& set);
+
+/// min, max, average, uniformity = U₀ (min/average) and U_d (min/max) of a set's values.
 void fill_sensor_statistics(SensorResult& result);
 
 }  // namespace radiant

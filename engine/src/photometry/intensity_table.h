@@ -1,0 +1,40 @@
+// A photometric table made continuous: intensity at any direction, smooth and exact at the
+// table's angles, never negative, and the flux it emits.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "radiant/photometry.h"
+
+namespace radiant {
+
+/// Why a table cannot be used (empty string when it can): angle ranges, order, values.
+std::string photometric_table_problem(const PhotometricTable& table);
+
+/// Interpolates a valid table (photometric_table_problem() empty) with monotone piecewise cubic
+/// Hermite curves (Fritsch & Carlson 1980), first across C then across γ. Monotone pieces never
+/// overshoot, so the intensity stays between neighbouring table values (never negative). The
+/// table's symmetry is unfolded to a full turn of C-planes; across the poles γ = 0 and 180° the
+/// curve continues into the opposite plane. Immutable; thread-safe.
+class IntensityTable {
+public:
+    explicit IntensityTable(const PhotometricTable& table);
+
+    /// Intensity (cd) at γ (radians from nadir) in the C-plane c (radians).
+    double candela(double gamma_rad, double c_rad) const;
+
+    /// ∫ I dω over the sphere (lm), by Gauss–Legendre quadrature on the table's cells.
+    double flux_lm() const { return flux_lm_; }
+
+private:
+    double row(std::size_t g, double c_deg) const;
+    double integrate() const;
+
+    std::vector<double> gamma_;  ///< degrees
+    std::vector<double> c_;      ///< degrees, a full turn [0, 360)
+    std::vector<double> cd_;     ///< [c * gamma_.size() + g]
+    double flux_lm_ = 0;
+};
+
+}  // namespace radiant
