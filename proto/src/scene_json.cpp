@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "import/scene_relative_file.h"
 #include "import/surface_import.h"
 #include "json_text.h"
 #include "photometry/ies_reader.h"
@@ -411,18 +412,32 @@ Luminaire SceneReader::luminaire(const Json& j, const Ptr& p) {
 }
 
 std::optional<PhotometricTable> SceneReader::photometry(const Json& j, const Ptr& p) {
-    check_keys(j, p, {"ies", "ldt"});
-    if (j.contains("ies") == j.contains("ldt")) {
-        report(p, "a photometric distribution needs exactly one of ies or ldt");
+    check_keys(j, p, {"ies", "ldt", "ies_file", "ldt_file"});
+    const char* key = nullptr;
+    int keys = 0;
+    for (const char* k : {"ies", "ldt", "ies_file", "ldt_file"}) {
+        if (j.contains(k)) key = k, ++keys;
+    }
+    if (keys != 1) {
+        report(p, "a photometric distribution needs exactly one of ies, ldt, ies_file or ldt_file");
         return std::nullopt;
     }
-    const char* key = j.contains("ies") ? "ies" : "ldt";
-    const std::string text = string(j[key], p / key, key);
+    const std::string_view kind = key;
+    std::string text = string(j[key], p / key, key);
     if (text.empty()) {
-        if (j[key].is_string()) report(p / key, std::string("the ") + key + " text is empty");
+        if (j[key].is_string()) report(p / key, "the " + std::string(kind) + " text is empty");
         return std::nullopt;
     }
-    auto table = j.contains("ies") ? read_ies(text) : read_ldt(text);
+    if (kind.ends_with("_file")) {
+        std::string bytes;
+        if (auto problem =
+                read_scene_relative_file(scene_directory_, text, limits_.max_bytes, bytes)) {
+            report(p / key, std::move(*problem));
+            return std::nullopt;
+        }
+        text = std::move(bytes);
+    }
+    auto table = kind.starts_with("ies") ? read_ies(text) : read_ldt(text);
     if (auto* problem = std::get_if<std::string>(&table)) {
         report(p / key, std::move(*problem));
         return std::nullopt;

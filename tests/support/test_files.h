@@ -28,7 +28,8 @@ inline std::vector<std::filesystem::path> json_files(const std::filesystem::path
     return files;
 }
 
-/// Every scene that must be accepted: tests/data/good, the examples and the validation scenes.
+/// Every scene that must be accepted: tests/data/good, the examples (with the furnished office
+/// and its model and photometric files) and the validation scenes.
 inline std::vector<std::filesystem::path> good_scenes() {
     const std::filesystem::path data = RADIANT_TEST_DATA;
     std::vector<std::filesystem::path> files = json_files(data / "good");
@@ -38,6 +39,8 @@ inline std::vector<std::filesystem::path> good_scenes() {
         files.insert(files.end(), more.begin(), more.end());
     }
     files.push_back(data / "radiance/room-s2.json");
+    files.push_back(std::filesystem::path(RADIANT_SOURCE_DIR) /
+                    "proto/examples/furnished-office/furnished-office.json");
     return files;
 }
 

@@ -1,12 +1,12 @@
 #include "surface_import.h"
 
 #include <cmath>
-#include <fstream>
 #include <set>
 
 #include "base64.h"
 #include "gltf_import.h"
 #include "obj_import.h"
+#include "scene_relative_file.h"
 
 namespace radiant::proto {
 namespace {
@@ -14,24 +14,8 @@ namespace {
 /// Reads a model file named relative to the scene file; returns the problem, if any.
 std::optional<std::string> read_model_file(const ImportRequest& r, std::filesystem::path& path,
                                            std::string& bytes) {
-    if (!r.scene_directory) {
-        return "a file reference needs a scene file (radiant validate/solve SCENE.json); inline "
-               "the model instead";
-    }
-    path = *r.scene_directory / r.value;
-    auto problem = [&](const std::string& why) {
-        return "cannot read " + path.string() + ": " + why;
-    };
-    std::error_code ec;
-    const auto size = std::filesystem::file_size(path, ec);
-    if (ec) return problem(ec.message());
-    if (size > r.max_bytes)
-        return problem("over the limit of " + std::to_string(r.max_bytes) + " bytes");
-    std::ifstream in(path, std::ios::binary);
-    bytes.assign(static_cast<std::size_t>(size), '\0');
-    if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
-        return problem("read error");
-    return std::nullopt;
+    if (r.scene_directory) path = *r.scene_directory / r.value;
+    return read_scene_relative_file(r.scene_directory, r.value, r.max_bytes, bytes);
 }
 
 ImportOutcome read_model(const ImportRequest& r) {
