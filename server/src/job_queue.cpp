@@ -43,7 +43,8 @@ JobProgress job_progress(const Progress& p, std::uint64_t sequence) {
 /// never waits for a client. Lock order: JobQueue::mutex_ before LiveJob::mutex, never the
 /// reverse.
 struct JobQueue::LiveJob final : SolveObserver {
-    explicit LiveJob(JobRecord r) : id(r.id), record(std::move(r)) {}
+    explicit LiveJob(JobRecord r)
+        : id(r.id), record(std::move(r)), last_event_id(record.progress.sequence) {}
 
     void on_progress(const Progress& p) noexcept override {
         const std::lock_guard lock(mutex);

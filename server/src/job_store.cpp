@@ -283,8 +283,12 @@ std::optional<StoredMesh> JobStore::mesh(const std::string& id) const {
 
 std::vector<std::string> JobStore::requeue_unfinished() {
     const std::lock_guard lock(mutex_);
+    // Event ids continue far above any the stopped run can have sent (it stored its sequence at
+    // least once a second and sends a few dozen ids a second), so a client resuming with an old
+    // Last-Event-ID still gets the new run's events.
     exec(
-        "UPDATE jobs SET status = 'queued', started = 0, progress = '{}'"
+        "UPDATE jobs SET status = 'queued', started = 0, progress = json_object('sequence',"
+        " COALESCE(json_extract(progress, '$.sequence'), 0) + 1000000)"
         " WHERE status IN ('queued', 'running')");
     Statement s(db_, "SELECT id FROM jobs WHERE status = 'queued' ORDER BY seq");
     std::vector<std::string> ids;

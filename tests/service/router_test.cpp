@@ -281,6 +281,9 @@ TEST(JobQueue, UnfinishedJobsRunAgainAfterRestart) {
         JobStore store(dir);
         store.insert(job);
         store.mark_running(job.id, now_millis());  // as if the process died mid-solve
+        JobProgress seen;
+        seen.sequence = 50;  // event ids a client may have seen
+        store.save_progress(job.id, seen);
     }
     {
         JobStore store(dir);
@@ -292,6 +295,9 @@ TEST(JobQueue, UnfinishedJobsRunAgainAfterRestart) {
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }
         EXPECT_EQ(queue.find(job.id)->status, JobStatus::done);
+        // The new run's event ids continue above the old ones.
+        EXPECT_GT(queue.find(job.id)->progress.sequence, 1000050u);
+        EXPECT_GT(queue.snapshot(job.id)->info().mesh_event_id, 1000050u);
         EXPECT_TRUE(store.result(job.id).has_value());
     }
     fs::remove_all(dir);

@@ -41,7 +41,7 @@ private:
 };
 
 struct Progress {
-    std::string stage;  ///< "meshing", "form factors", "solving", "sensors"
+    std::string stage;    ///< "meshing", "form factors", "solving", "sensors"
     double fraction = 0;  ///< rough completion of the whole solve in [0, 1]
     std::size_t iterations = 0;
     double unshot_fraction = 0;
@@ -55,8 +55,8 @@ struct Progress {
 /// A progressive result published while the solve runs: the patch mesh with the current
 /// radiosity (triangle and vertex values), so a viewer can redraw as the solution converges.
 struct Snapshot {
-    std::uint64_t version = 0;       ///< 1, 2, … in publication order
-    std::uint64_t mesh_version = 0;  ///< changes only when the geometry (triangles) changes
+    std::uint64_t version = 0;               ///< 1, 2, … in publication order
+    std::uint64_t mesh_version = 0;          ///< changes only when the geometry (triangles) changes
     std::shared_ptr<const SolvedMesh> mesh;  ///< world coordinates; radiosity of this snapshot
     Progress progress;
     bool final = false;  ///< the last snapshot: its values are the result's
@@ -68,7 +68,9 @@ class SolveObserver {
 public:
     virtual ~SolveObserver() = default;
     virtual void on_progress(const Progress& progress) = 0;
-    /// At most once per SolveOptions::snapshot_interval_seconds, and once at the end.
+    /// At most once per SolveOptions::snapshot_interval_seconds, and once at the end; from the
+    /// first patch mesh on also at least every 1.5 intervals, in every phase (phases without new
+    /// values repeat the latest ones). May be called from a thread of the engine's own.
     virtual void on_snapshot(const Snapshot& /*snapshot*/) {}
 };
 

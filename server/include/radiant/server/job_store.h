@@ -53,7 +53,8 @@ public:
     std::optional<StoredMesh> mesh(const std::string& id) const;
 
     /// Jobs that were queued or running when the last process stopped, oldest first; their state
-    /// goes back to queued (a solve that did not finish starts over).
+    /// goes back to queued (a solve that did not finish starts over) and their progress to just
+    /// a sequence a million above the stored one, where the next run's event ids continue.
     std::vector<std::string> requeue_unfinished();
     std::map<JobStatus, std::size_t> count_by_status() const;
 
