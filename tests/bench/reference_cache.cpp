@@ -63,8 +63,15 @@ std::uint64_t scene_fingerprint(const Scene& scene) {
     for (const auto& l : scene.luminaires) {
         h.add(l.position);
         h.add(l.aim);
-        h.add(l.flux_lm);
-        h.add(l.distribution == Distribution::lambertian ? 1.0 : 0.0);
+        h.add(l.flux_lm.value_or(-1.0));
+        h.add(static_cast<double>(l.distribution));
+        h.add(l.rotation_deg);
+        if (l.photometry) {
+            for (const auto* values :
+                 {&l.photometry->gamma_deg, &l.photometry->c_deg, &l.photometry->candela}) {
+                for (const double v : *values) h.add(v);
+            }
+        }
     }
     for (const auto& set : scene.sensors) {
         h.add(set.name);
