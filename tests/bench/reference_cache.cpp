@@ -67,9 +67,10 @@ std::uint64_t scene_fingerprint(const Scene& scene) {
         h.add(static_cast<double>(l.distribution));
         h.add(l.rotation_deg);
         if (l.photometry) {
-            for (const double v : l.photometry->gamma_deg) h.add(v);
-            for (const double v : l.photometry->c_deg) h.add(v);
-            for (const double v : l.photometry->candela) h.add(v);
+            for (const auto* values :
+                 {&l.photometry->gamma_deg, &l.photometry->c_deg, &l.photometry->candela}) {
+                for (const double v : *values) h.add(v);
+            }
         }
     }
     for (const auto& set : scene.sensors) {

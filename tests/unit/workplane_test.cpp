@@ -143,6 +143,27 @@ TEST(Workplane, BadWorkPlanesAreRefusedWithTheirPointer) {
               "/sensors/0/workplane/width: unknown key");
 }
 
+// A room modelled as one box facing in: its floor is the box's bottom face. A wall has no
+// upward-facing face to lay a grid on.
+TEST(Workplane, BoxFloorsAndWallsThatAreNoFloor) {
+    const std::string box_room = R"({"format": "radiant-scene/1",
+      "materials": {"wall": {"reflectance": 0.5}},
+      "surfaces": [
+        {"name": "room", "material": "wall", "box": {"min": [0,0,0], "max": [6,4,3], "facing": "in"}},
+        {"name": "wall", "material": "wall", "polygon": [[1,1,0],[2,1,0],[2,1,1],[1,1,1]]}],
+      "luminaires": [{"name": "bulb", "position": [3,2,2.5], "flux": 1000}],
+      "sensors": [{"name": "wp", "workplane": {"surfaces": ["room"]}}]})";
+    const Scene scene = parsed(box_room);
+    EXPECT_EQ(scene.sensors[0].points.size(), 45u);
+    EXPECT_NEAR(scene.sensors[0].points[0].z, 0.8, 1e-12);
+    std::string on_wall = box_room;
+    on_wall.replace(on_wall.find(R"("surfaces": ["room"])"), 20, R"("surfaces": ["wall"])");
+    const auto refused = problems(on_wall);
+    ASSERT_EQ(refused.size(), 1u);
+    EXPECT_EQ(refused[0].pointer, "/sensors/0/workplane");
+    EXPECT_EQ(refused[0].message, "the named surfaces have no upward-facing horizontal face");
+}
+
 // Every solver returns the grid with the set, and U₀, U_d computed from its own illuminances.
 TEST(Workplane, MetricsAndGridFromEverySolver) {
     const Scene scene = parsed(room(R"({"surfaces": ["floor"], "height": 0.8, "border": 0.5})"));
