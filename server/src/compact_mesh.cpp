@@ -83,6 +83,20 @@ CompactMesh compact(const SolvedMesh& mesh) {
     return out;
 }
 
+SolvedMesh expand(const CompactMesh& mesh) {
+    SolvedMesh out;
+    for (std::size_t i = 0; i + 2 < mesh.vertices.size(); i += 3) {
+        out.vertices.push_back({mesh.vertices[i], mesh.vertices[i + 1], mesh.vertices[i + 2]});
+    }
+    for (std::size_t i = 0; i + 2 < mesh.triangles.size(); i += 3) {
+        out.triangles.push_back({mesh.triangles[i], mesh.triangles[i + 1], mesh.triangles[i + 2]});
+    }
+    out.triangle_surface.assign(mesh.triangle_surface.begin(), mesh.triangle_surface.end());
+    out.triangle_radiosity.assign(mesh.triangle_radiosity.begin(), mesh.triangle_radiosity.end());
+    out.vertex_radiosity.assign(mesh.vertex_radiosity.begin(), mesh.vertex_radiosity.end());
+    return out;
+}
+
 std::string encode(const CompactMesh& mesh) {
     const std::array<std::uint32_t, kHeaderWords> header = {
         kMagic,

@@ -7,9 +7,11 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <thread>
 
+#include "gltf_validator.h"
 #include "radiant/proto/scene_json.h"
 #include "radiant/server/config.h"
 #include "service_scenes.h"
@@ -107,6 +109,31 @@ TEST(Router, GoodSceneIsAcceptedAndSolved) {
     EXPECT_EQ(doc["format"], "radiant-result/1");
     EXPECT_EQ(doc["status"], "converged");
     EXPECT_GT(doc["sensors"][0]["average"].get<double>(), 0);
+}
+
+TEST(Router, ResultGlbIsAValidGltfOfTheSolvedMeshAndSensors) {
+    Service s;
+    const Response posted = s.post(radiant::test::tiny_room());
+    ASSERT_EQ(posted.result(), http::status::accepted) << posted.body();
+    const std::string id = id_of(posted);
+    ASSERT_EQ(s.wait_for(id, "done")["status"], "done");
+    const Response glb = s.get("/v1/jobs/" + id + "/result.glb");
+    ASSERT_EQ(glb.result(), http::status::ok) << glb.body();
+    EXPECT_EQ(glb[http::field::content_type], "model/gltf-binary");
+    const std::string& body = glb.body();
+    ASSERT_GT(body.size(), 20u);
+    EXPECT_EQ(body.substr(0, 4), "glTF");
+    // Both layers are there: the solved surfaces and the sensor points.
+    EXPECT_NE(body.find("\"surfaces\""), std::string::npos);
+    EXPECT_NE(body.find("\"sensors\""), std::string::npos);
+    const fs::path file = s.dir() / "result.glb";
+    std::ofstream(file, std::ios::binary) << body;
+    radiant::test::expect_valid_gltf(file);
+
+    EXPECT_EQ(s.get("/v1/jobs/ffffffffffffffffffffffffffffffff/result.glb").result(),
+              http::status::not_found);
+    EXPECT_EQ(s.call(http::verb::post, "/v1/jobs/" + id + "/result.glb").response.result(),
+              http::status::method_not_allowed);
 }
 
 TEST(Router, BadJsonIs400) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "gltf_validator.h"
 #include "radiant/proto/result_gltf.h"
 #include "scene_files.h"
 #include "test_files.h"
@@ -21,22 +22,7 @@ fs::path temp_file(const std::string& name) {
     return fs::temp_directory_path() / ("radiant_gltf_" + std::to_string(getpid()) + "_" + name);
 }
 
-/// Runs the Khronos validator on `file`; its report goes to the test log.
-void expect_valid(const fs::path& file) {
-    if (std::system("command -v node >/dev/null 2>&1") != 0) {
-        GTEST_SKIP() << "node is not installed (scripts/deps installs it): glTF not validated";
-    }
-    const std::string command = std::string("node '") + RADIANT_SOURCE_DIR +
-                                "/tools/validate-gltf.mjs' '" + file.string() + "' 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    ASSERT_NE(pipe, nullptr);
-    std::string report;
-    char line[1024];
-    while (std::fgets(line, sizeof line, pipe)) report += line;
-    const int status = pclose(pipe);
-    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << report;
-    EXPECT_NE(report.find(": 0 errors"), std::string::npos) << report;
-}
+void expect_valid(const fs::path& file) { test::expect_valid_gltf(file); }
 
 tinygltf::Model read_glb(const fs::path& file) {
     tinygltf::Model model;

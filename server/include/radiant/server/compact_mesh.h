@@ -23,6 +23,8 @@ struct CompactMesh {
 };
 
 CompactMesh compact(const SolvedMesh& mesh);
+/// Back to the engine's form (doubles), e.g. for writing glTF from a stored mesh.
+SolvedMesh expand(const CompactMesh& mesh);
 
 /// Little-endian blob: a magic word, five array lengths, then the arrays in field order.
 std::string encode(const CompactMesh& mesh);

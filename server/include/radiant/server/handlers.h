@@ -32,6 +32,9 @@ Response get_job(ServiceContext& ctx, const Request& request, const std::string&
 /// `?include=mesh` adds the solved mesh (a running job's: its latest snapshot's).
 Response get_result(ServiceContext& ctx, const Request& request, const std::string& id,
                     const Query& query);
+/// The solved mesh and sensors as binary glTF (`radiant solve --gltf`); a running job's from its
+/// latest snapshot, without sensors (they are computed at the end of a solve).
+Response get_result_glb(ServiceContext& ctx, const Request& request, const std::string& id);
 Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id);
 Response list_jobs(ServiceContext& ctx, const Request& request, const Query& query);
 Response healthz(ServiceContext& ctx, const Request& request);
