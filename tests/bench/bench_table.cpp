@@ -226,4 +226,21 @@ void print_time_to_error(std::ostream& out, const std::vector<BenchRow>& rows, d
     }
 }
 
+void print_estimate_misses(std::ostream& out, const std::vector<BenchRow>& rows) {
+    std::size_t checked = 0;
+    std::vector<const BenchRow*> misses;
+    for (const auto& r : rows) {
+        if (r.status != "converged" || !std::isfinite(r.max_error)) continue;
+        ++checked;
+        if (r.max_error > r.error_estimate) misses.push_back(&r);
+    }
+    out << "\nError estimate against the largest error: " << misses.size() << " of " << checked
+        << " converged rows have a larger error than their estimate (the estimate bounds the "
+           "discrete system's error; the rest is the mesh's)\n";
+    for (const BenchRow* r : misses) {
+        out << "- " << r->scene << " " << r->method << " " << sci(r->tolerance) << ": max error "
+            << sci(r->max_error) << ", estimate " << sci(r->error_estimate) << '\n';
+    }
+}
+
 }  // namespace radiant::bench

@@ -303,6 +303,7 @@ int main(int argc, char** argv) {
         if (std::find(names.begin(), names.end(), n) != names.end()) series.push_back(n);
     }
     if (series.size() >= 2) print_scaling(summary, rows, series);
+    print_estimate_misses(summary, rows);
     std::cout << summary.str();
     markdown << summary.str();
     plot_error_against_time(rows, out_stem, std::cerr);
