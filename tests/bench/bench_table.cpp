@@ -130,7 +130,7 @@ bool plot_error_against_time(const std::vector<BenchRow>& rows, const std::files
         std::ofstream gp(script);
         gp << "set terminal pngcairo size 1280,900 noenhanced\n"
            << "set output '" << png.string() << "'\n"
-           << "set logscale xy\nset grid\nset key outside right top\n"
+           << "set logscale xy\nset format xy '%g'\nset grid\nset key outside right top\n"
            << "set xlabel 'seconds'\nset ylabel 'RMS relative error'\n"
            << "set title 'radiant-bench: error against time'\n";
         int block = 0;
@@ -163,11 +163,14 @@ void print_scaling(std::ostream& out, const std::vector<BenchRow>& rows,
                    const std::vector<std::string>& scenes) {
     std::map<std::pair<std::string, double>, std::vector<const BenchRow*>> series;
     for (const auto& r : rows) {
-        if (usable(r) && std::find(scenes.begin(), scenes.end(), r.scene) != scenes.end()) {
+        // Only solves that finished: a capped run's time and memory say nothing about growth.
+        if (r.status == "converged" &&
+            std::find(scenes.begin(), scenes.end(), r.scene) != scenes.end()) {
             series[{r.method, r.tolerance}].push_back(&r);
         }
     }
-    out << "\nScaling (least squares over the series; last step = the two largest scenes):\n\n"
+    out << "\nScaling of converged solves (least-squares exponents against input triangles; last "
+           "step: the two largest scenes):\n\n"
         << "| method | tolerance | scenes | time exponent | last step | memory exponent | last "
            "step | links per element |\n"
         << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
@@ -220,6 +223,23 @@ void print_time_to_error(std::ostream& out, const std::vector<BenchRow>& rows, d
         } else {
             out << "no usable run | | |\n";
         }
+    }
+}
+
+void print_estimate_misses(std::ostream& out, const std::vector<BenchRow>& rows) {
+    std::size_t checked = 0;
+    std::vector<const BenchRow*> misses;
+    for (const auto& r : rows) {
+        if (r.status != "converged" || !std::isfinite(r.max_error)) continue;
+        ++checked;
+        if (r.max_error > r.error_estimate) misses.push_back(&r);
+    }
+    out << "\nError estimate against the largest error: " << misses.size() << " of " << checked
+        << " converged rows have a larger error than their estimate (the estimate bounds the "
+           "discrete system's error; the rest is the mesh's)\n";
+    for (const BenchRow* r : misses) {
+        out << "- " << r->scene << " " << r->method << " " << sci(r->tolerance) << ": max error "
+            << sci(r->max_error) << ", estimate " << sci(r->error_estimate) << '\n';
     }
 }
 

@@ -39,12 +39,16 @@ void print_csv_row(std::ostream& out, const BenchRow& row);
 bool plot_error_against_time(const std::vector<BenchRow>& rows, const std::filesystem::path& stem,
                              std::ostream& log);
 
-/// For each method and tolerance over the rows of `scenes` (a scaling series): the least-squares
-/// exponents of seconds and of peak memory against input triangles, and links per element.
+/// For each method and tolerance over the converged rows of `scenes` (a scaling series): the
+/// least-squares exponents of seconds and of peak memory against input triangles, and links
+/// per element.
 void print_scaling(std::ostream& out, const std::vector<BenchRow>& rows,
                    const std::vector<std::string>& scenes);
 
 /// For each scene and method, the least time among rows whose RMS error is at most `target`.
 void print_time_to_error(std::ostream& out, const std::vector<BenchRow>& rows, double target);
+
+/// The rows whose largest error against the reference exceeds their own error estimate.
+void print_estimate_misses(std::ostream& out, const std::vector<BenchRow>& rows);
 
 }  // namespace radiant::bench

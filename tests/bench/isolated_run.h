@@ -12,8 +12,8 @@ namespace radiant::bench {
 
 struct IsolatedOutcome {
     std::optional<nlohmann::json> value;  ///< what `work` returned; empty when the child failed
-    double peak_mib = 0;                  ///< the child's peak resident memory
-    std::string failure;                  ///< why there is no value (signal, exception, …)
+    double peak_mib = 0;  ///< the child's peak resident memory (ru_maxrss or VmHWM, the larger)
+    std::string failure;  ///< why there is no value (signal, exception, …)
 };
 
 /// Forks, runs `work` in the child and returns its JSON. The child is killed (SIGALRM) after

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <ctime>
 #include <numbers>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -100,6 +101,11 @@ INSTANTIATE_TEST_SUITE_P(Rho, HighReflectanceFurnace, ::testing::Values(0.99, 0.
 struct PerpendicularCase {
     double edge, emitter_width, receiver_height;
 };
+
+void PrintTo(const PerpendicularCase& c, std::ostream* os) {
+    *os << "edge " << c.edge << " m, emitter width " << c.emitter_width << " m, receiver height "
+        << c.receiver_height << " m";
+}
 
 class AdjacentPerpendicular : public ::testing::TestWithParam<PerpendicularCase> {};
 
