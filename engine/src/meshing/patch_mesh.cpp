@@ -298,7 +298,8 @@ PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) 
     }
     target_edge_m_ = h;
 
-    const Contacts contacts = all_contacts(scene, eps, 0.5 * h);
+    const double gap = options.shading_gap_m > 0 ? options.shading_gap_m : 0.5 * h;
+    const Contacts contacts = all_contacts(scene, eps, gap);
     VertexIndex index;
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
         const Piece& piece = scene.pieces[i];

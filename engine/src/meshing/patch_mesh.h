@@ -40,6 +40,11 @@ struct PatchGeometry {
 struct MeshingOptions {
     double target_edge_m = 1.0;
     std::size_t max_patches = 3000;  ///< the target edge grows until the estimate fits
+    /// Parallel pieces nearer than this cut each other's patches along their outlines; 0: half
+    /// the patch edge. Patches that are refined further (hierarchical roots) need only the gaps
+    /// their refinement cannot resolve, and a gap growing with the patch costs quadratic time
+    /// and memory (every parallel piece within it).
+    double shading_gap_m = 0;
 };
 
 /// Target patch edge from the scene's scale and the tolerance: radiosity varies over the mean
@@ -67,10 +72,9 @@ private:
     using DoubleProp = OpenMesh::FPropHandleT<double>;
     std::vector<double>& prop(DoubleProp h) { return mesh_.property(h).data_vector(); }
     const std::vector<double>& prop(DoubleProp h) const { return mesh_.property(h).data_vector(); }
-    using VertexIndex =
-        std::map<std::tuple<int, bool, std::tuple<long long, long long, long long>, double, double,
-                            double>,
-                 PolyMesh::VertexHandle>;
+    using VertexIndex = std::map<
+        std::tuple<int, bool, std::tuple<long long, long long, long long>, double, double, double>,
+        PolyMesh::VertexHandle>;
     void add_face(const PatchGeometry& patch, VertexIndex& index);
 
     PolyMesh mesh_;

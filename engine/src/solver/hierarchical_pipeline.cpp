@@ -41,7 +41,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     const int channels = scene.channels;
     const double patch_edge = target_patch_edge(input.mean_free_path_m, options_.tolerance);
 
-    const PatchMesh roots(scene, {kRootEdgeFactor * patch_edge, kMaxRootPatches});
+    // Only gaps narrower than the smallest element must cut the roots: wider ones are resolved
+    // by refinement, as the dense path resolves those wider than half its patch.
+    const PatchMesh roots(
+        scene, {kRootEdgeFactor * patch_edge, kMaxRootPatches, 0.5 * kMinEdgeFactor * patch_edge});
     const std::vector<char> enclosed =
         enclosed_patches(scene, roots, visibility, input.triangle_piece, options_.seed);
     ElementTree tree(scene, roots, visibility, kMinEdgeFactor * patch_edge, options_.seed);
