@@ -66,7 +66,9 @@ int run_render(const RenderArgs& args) {
     if (args.falsecolor) {
         const std::vector<double> lux = vertex_illuminance(result, *solved.scene);
         double max = args.max_lux;
-        if (!(max > 0)) max = round_scale_max(*std::max_element(lux.begin(), lux.end()));
+        if (!(max > 0) && !lux.empty()) {
+            max = round_scale_max(*std::max_element(lux.begin(), lux.end()));
+        }
         image = false_colour_view(mesh, lux, hits, max, "lux");
     } else {
         image = luminance_view(mesh, hits, args.exposure);
