@@ -7,7 +7,6 @@
 #include <iostream>
 #include <mutex>
 
-#include "exit_codes.h"
 #include "radiant/proto/scene_json.h"
 #include "radiant/solve.h"
 
@@ -58,30 +57,30 @@ void add_solve_flags(CLI::App& command, SolveFlags& flags) {
     command.add_option("--method", flags.method, "solver")->check(CLI::IsMember(solver_names()));
 }
 
-LocalSolve solve_scene_file(const std::string& scene_file, const SolveFlags& flags,
-                            bool want_mesh) {
-    LocalSolve solved;
+std::optional<Scene> load_checked_scene(const std::string& scene_file) {
     proto::ParseOutcome outcome = proto::load_scene_file(scene_file);
-    if (!outcome.ok()) {
-        for (const Problem& p : outcome.problems) {
-            std::cerr << proto::format_problem(scene_file, p) << '\n';
-        }
-        solved.exit_code = kExitBadInput;
-        return solved;
+    for (const Problem& p : outcome.problems) {
+        std::cerr << proto::format_problem(scene_file, p) << '\n';
     }
-    SolveOptions options = options_from(outcome.scene->settings);
+    return std::move(outcome.scene);
+}
+
+Result solve_locally(const Scene& scene, const SolveFlags& flags, bool want_mesh) {
+    SolveOptions options = options_from(scene.settings);
     if (flags.tolerance) options.tolerance = *flags.tolerance;
     if (flags.max_seconds) options.max_seconds = *flags.max_seconds;
     if (flags.threads) options.threads = *flags.threads;
     if (flags.method) options.method = *flags.method;
     options.want_mesh = want_mesh;
-    {
-        std::optional<ProgressLine> progress;
-        if (::isatty(STDERR_FILENO)) progress.emplace();
-        solved.result = solve(*outcome.scene, options, progress ? &*progress : nullptr);
-    }
-    solved.scene = std::move(outcome.scene);
-    return solved;
+    std::optional<ProgressLine> progress;
+    if (::isatty(STDERR_FILENO)) progress.emplace();
+    return solve(scene, options, progress ? &*progress : nullptr);
+}
+
+bool report_failed_solve(const Result& result) {
+    if (result.status != SolveStatus::failed) return false;
+    std::cerr << "radiant: solve failed: " << result.error << '\n';
+    return true;
 }
 
 }  // namespace radiant::cli

@@ -23,13 +23,14 @@ struct SolveFlags {
 /// Registers --tolerance, --max-seconds, --threads and --method on a subcommand.
 void add_solve_flags(CLI::App& command, SolveFlags& flags);
 
-struct LocalSolve {
-    int exit_code = 0;  ///< kExitOk, or kExitBadInput after the scene's problems went to stderr
-    std::optional<Scene> scene;
-    Result result;
-};
+/// Loads and checks `scene_file`; on problems prints them (`FILE: /pointer: message`) and gives
+/// nothing, so commands can check their own arguments against the scene before solving.
+std::optional<Scene> load_checked_scene(const std::string& scene_file);
 
-/// Loads `scene_file`, prints its problems (exit 2) or solves it. A failed solve is in `result`.
-LocalSolve solve_scene_file(const std::string& scene_file, const SolveFlags& flags, bool want_mesh);
+/// Solves `scene` in-process with `flags` over its settings; a progress line on a terminal.
+Result solve_locally(const Scene& scene, const SolveFlags& flags, bool want_mesh);
+
+/// Prints why the solve failed, if it did; true then.
+bool report_failed_solve(const Result& result);
 
 }  // namespace radiant::cli

@@ -23,14 +23,10 @@ struct PlanArgs {
 };
 
 int run_plan(const PlanArgs& args) {
-    LocalSolve solved = solve_scene_file(args.scene, args.flags, false);
-    if (solved.exit_code != kExitOk) return solved.exit_code;
-    const Result& result = solved.result;
-    if (result.status == SolveStatus::failed) {
-        std::cerr << "radiant: solve failed: " << result.error << '\n';
-        return kExitFailure;
-    }
-    const std::vector<SensorSet>& sets = solved.scene->sensors;
+    const std::optional<Scene> scene = load_checked_scene(args.scene);
+    if (!scene) return kExitBadInput;
+    // The set is looked up before solving, so a wrong name costs no solve.
+    const std::vector<SensorSet>& sets = scene->sensors;
     const auto set = std::find_if(sets.begin(), sets.end(), [&](const SensorSet& s) {
         return args.sensors.empty() || s.name == args.sensors;
     });
@@ -41,6 +37,8 @@ int run_plan(const PlanArgs& args) {
                   << '\n';
         return kExitBadInput;
     }
+    const Result result = solve_locally(*scene, args.flags, false);
+    if (report_failed_solve(result)) return kExitFailure;
     const auto index = static_cast<std::size_t>(set - sets.begin());
     SensorPlan plan;
     plan.title = result.scene + " - " + set->name;

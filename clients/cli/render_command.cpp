@@ -39,22 +39,35 @@ Vec3 to_metres(const std::array<double, 3>& a, const Scene& scene) {
     return vec(a) * meters_per_unit(scene.units);
 }
 
+/// The camera from the arguments; what they leave open comes from `fallback`.
+Camera camera_from(const RenderArgs& args, const Scene& scene, Camera fallback) {
+    if (args.eye) fallback.eye = to_metres(*args.eye, scene);
+    if (args.target) fallback.target = to_metres(*args.target, scene);
+    fallback.up = vec(args.up);
+    fallback.vertical_fov_degrees = args.fov;
+    fallback.width = args.width;
+    fallback.height = args.height;
+    return fallback;
+}
+
 int run_render(const RenderArgs& args) {
-    LocalSolve solved = solve_scene_file(args.scene, args.flags, true);
-    if (solved.exit_code != kExitOk) return solved.exit_code;
-    const Result& result = solved.result;
-    if (result.status == SolveStatus::failed || !result.mesh) {
-        std::cerr << "radiant: solve failed: " << result.error << '\n';
+    const std::optional<Scene> scene = load_checked_scene(args.scene);
+    if (!scene) return kExitBadInput;
+    // A camera given in full is checked before solving, so a bad one costs no solve.
+    if (args.eye && args.target) {
+        if (auto problem = camera_problem(camera_from(args, *scene, {}))) {
+            std::cerr << "radiant: " << *problem << '\n';
+            return kExitBadInput;
+        }
+    }
+    const Result result = solve_locally(*scene, args.flags, true);
+    if (report_failed_solve(result)) return kExitFailure;
+    if (!result.mesh) {
+        std::cerr << "radiant: the solve returned no mesh to render\n";
         return kExitFailure;
     }
     const SolvedMesh& mesh = *result.mesh;
-    Camera camera = default_camera(mesh);
-    if (args.eye) camera.eye = to_metres(*args.eye, *solved.scene);
-    if (args.target) camera.target = to_metres(*args.target, *solved.scene);
-    camera.up = vec(args.up);
-    camera.vertical_fov_degrees = args.fov;
-    camera.width = args.width;
-    camera.height = args.height;
+    const Camera camera = camera_from(args, *scene, default_camera(mesh));
     ViewHits hits;
     try {
         hits = cast_view(mesh, camera);
@@ -64,7 +77,7 @@ int run_render(const RenderArgs& args) {
     }
     Image image(1, 1, {});
     if (args.falsecolor) {
-        const std::vector<double> lux = vertex_illuminance(result, *solved.scene);
+        const std::vector<double> lux = vertex_illuminance(result, *scene);
         double max = args.max_lux;
         if (!(max > 0) && !lux.empty()) {
             max = round_scale_max(*std::max_element(lux.begin(), lux.end()));

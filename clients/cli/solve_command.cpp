@@ -22,11 +22,11 @@ struct SolveArgs {
 };
 
 int run_solve(const SolveArgs& args) {
-    LocalSolve solved = solve_scene_file(args.scene, args.flags, args.mesh || !args.gltf.empty());
-    if (solved.exit_code != kExitOk) return solved.exit_code;
-    Result& result = solved.result;
+    const std::optional<Scene> scene = load_checked_scene(args.scene);
+    if (!scene) return kExitBadInput;
+    Result result = solve_locally(*scene, args.flags, args.mesh || !args.gltf.empty());
     if (!args.gltf.empty() && result.status != SolveStatus::failed) {
-        write_file_atomically(args.gltf, proto::result_to_glb(result, *solved.scene));
+        write_file_atomically(args.gltf, proto::result_to_glb(result, *scene));
     }
     if (!args.mesh) result.mesh.reset();  // requested for the glTF only
     const std::string text = proto::result_to_json(result).dump(2) + "\n";
@@ -35,11 +35,7 @@ int run_solve(const SolveArgs& args) {
     } else {
         write_file_atomically(args.out, text);
     }
-    if (result.status == SolveStatus::failed) {
-        std::cerr << "radiant: solve failed: " << result.error << '\n';
-        return kExitFailure;
-    }
-    return kExitOk;
+    return report_failed_solve(result) ? kExitFailure : kExitOk;
 }
 
 }  // namespace

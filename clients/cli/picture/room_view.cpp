@@ -39,17 +39,23 @@ Camera default_camera(const SolvedMesh& mesh) {
     return camera;
 }
 
-ViewHits cast_view(const SolvedMesh& mesh, const Camera& camera) {
+std::optional<std::string> camera_problem(const Camera& camera) {
     const Vec3 view = camera.target - camera.eye;
     const Vec3 side = cross(view, camera.up);
     if (!(length(view) > 0) || !(length(side) > 1e-9 * length(view) * length(camera.up))) {
-        throw std::invalid_argument(
-            "the camera needs a target away from the eye and an up "
-            "direction that is not along the view");
+        return "the camera needs a target away from the eye and an up direction that is not "
+               "along the view";
     }
     if (!(camera.vertical_fov_degrees > 0 && camera.vertical_fov_degrees < 180)) {
-        throw std::invalid_argument("the field of view must be in (0, 180) degrees");
+        return "the field of view must be in (0, 180) degrees";
     }
+    return std::nullopt;
+}
+
+ViewHits cast_view(const SolvedMesh& mesh, const Camera& camera) {
+    if (auto problem = camera_problem(camera)) throw std::invalid_argument(*problem);
+    const Vec3 view = camera.target - camera.eye;
+    const Vec3 side = cross(view, camera.up);
     const Vec3 forward = normalized(view);
     const Vec3 right = normalized(side);
     const Vec3 up = cross(right, forward);

@@ -2,6 +2,8 @@
 // over each triangle from its vertices (Gouraud), shown as tone-mapped luminance or false colour.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "picture/image.h"
@@ -33,7 +35,11 @@ struct ViewHits {
     std::vector<Pixel> pixels;
 };
 
-/// Throws std::invalid_argument for a degenerate camera (eye = target, up along the view).
+/// Why `camera` cannot take a picture (eye = target, up along the view, field of view out of
+/// (0, 180)), or nothing.
+std::optional<std::string> camera_problem(const Camera& camera);
+
+/// Throws std::invalid_argument with camera_problem's message for a degenerate camera.
 ViewHits cast_view(const SolvedMesh& mesh, const Camera& camera);
 
 /// The value at a hit pixel from per-vertex values; back sides read 0 (they do not reflect).
