@@ -2,7 +2,9 @@
 
 #include <charconv>
 #include <string_view>
+#include <vector>
 
+#include "radiant/proto/result_gltf.h"
 #include "radiant/proto/scene_json.h"
 
 namespace radiant::server::handlers {
@@ -17,6 +19,28 @@ constexpr const char* kRetryAfterSeconds = "5";
 Response unknown_job(const Request& request, const std::string& id) {
     return error_response(request, http::status::not_found, "not_found",
                           "no job with id \"" + id + "\"");
+}
+
+Response not_ready(const Request& request, const std::string& id) {
+    return error_response(request, http::status::not_found, "not_ready",
+                          "job " + id + " is queued; it has no result yet");
+}
+
+/// The sensor sets of a stored radiant-result/1 document: names and illuminances only, which is
+/// all the glTF's point layer needs.
+std::vector<SensorResult> stored_sensors(const std::string& document) {
+    std::vector<SensorResult> sensors;
+    const auto doc = nlohmann::json::parse(document, nullptr, false);
+    if (!doc.is_object() || !doc.contains("sensors") || !doc["sensors"].is_array()) return sensors;
+    for (const auto& s : doc["sensors"]) {
+        SensorResult r;
+        r.name = s.value("name", "");
+        if (s.contains("illuminance") && s["illuminance"].is_array()) {
+            for (const auto& v : s["illuminance"]) r.illuminance.push_back(v.get<double>());
+        }
+        sensors.push_back(std::move(r));
+    }
+    return sensors;
 }
 
 Response job_response(const Request& request, http::status status, const JobRecord& job) {
@@ -122,10 +146,7 @@ Response get_result(ServiceContext& ctx, const Request& request, const std::stri
     }
     const auto job = ctx.jobs.find(id);
     if (!job) return unknown_job(request, id);
-    if (job->status == JobStatus::queued) {
-        return error_response(request, http::status::not_found, "not_ready",
-                              "job " + id + " is queued; it has no result yet");
-    }
+    if (job->status == JobStatus::queued) return not_ready(request, id);
     // One snapshot for the whole answer, so its version and its mesh agree.
     const bool running = job->status == JobStatus::running;
     const auto snapshot = running || with_mesh ? ctx.jobs.snapshot(id) : nullptr;
@@ -142,6 +163,34 @@ Response get_result(ServiceContext& ctx, const Request& request, const std::stri
     // A running job's newest snapshot, or a finished job's final one: the solved mesh.
     if (with_mesh && snapshot) document = add_mesh(std::move(document), snapshot->mesh());
     return text_response(request, http::status::ok, document + "\n", "application/json");
+}
+
+Response get_result_glb(ServiceContext& ctx, const Request& request, const std::string& id) {
+    const auto job = ctx.jobs.find(id);
+    const auto stored = ctx.store.find(id, true);
+    if (!job || !stored) return unknown_job(request, id);
+    if (job->status == JobStatus::queued) return not_ready(request, id);
+    const auto snapshot = ctx.jobs.snapshot(id);
+    if (!snapshot) {
+        return error_response(
+            request, http::status::not_found, "no_result",
+            "job " + id + " was " + to_string(job->status) + " before it produced a mesh");
+    }
+    // The scene was accepted when submitted, so it parses again; it gives the sensor points and
+    // the units for the glTF.
+    const proto::ParseOutcome scene = proto::parse_scene(stored->scene_json);
+    if (!scene.ok()) {
+        return error_response(request, http::status::internal_server_error, "internal",
+                              "the stored scene of job " + id + " no longer parses");
+    }
+    Result result;
+    result.scene = scene.scene->name;
+    result.mesh = expand(snapshot->mesh());
+    if (job->status != JobStatus::running) {
+        if (auto document = ctx.store.result(id)) result.sensors = stored_sensors(*document);
+    }
+    return text_response(request, http::status::ok, proto::result_to_glb(result, *scene.scene),
+                         "model/gltf-binary");
 }
 
 Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id) {
