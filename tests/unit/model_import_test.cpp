@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "glb_writer.h"
 #include "radiant/proto/scene_json.h"
 #include "scene_files.h"
 #include "test_files.h"
@@ -102,41 +103,10 @@ TEST(ModelImport, GltfIsConvertedToZUpSceneUnits) {
 /// A one-primitive glTF written with tinygltf: a unit square at height 0 (y-up), as a triangle
 /// strip, under a node with `scale`.
 fs::path write_strip_glb(const std::vector<double>& scale) {
-    tinygltf::Model model;
-    const float positions[] = {0, 0, 0, 1, 0, 0, 0, 0, -1, 1, 0, -1};
-    tinygltf::Buffer buffer;
-    buffer.data.resize(sizeof positions);
-    std::memcpy(buffer.data.data(), positions, sizeof positions);
-    model.buffers.push_back(buffer);
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteLength = sizeof positions;
-    model.bufferViews.push_back(view);
-    tinygltf::Accessor accessor;
-    accessor.bufferView = 0;
-    accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    accessor.type = TINYGLTF_TYPE_VEC3;
-    accessor.count = 4;
-    model.accessors.push_back(accessor);
-    tinygltf::Primitive primitive;
-    primitive.attributes["POSITION"] = 0;
-    primitive.mode = TINYGLTF_MODE_TRIANGLE_STRIP;
-    tinygltf::Mesh mesh;
-    mesh.primitives.push_back(primitive);
-    model.meshes.push_back(mesh);
-    tinygltf::Node node;
-    node.mesh = 0;
-    node.scale = scale;
-    model.nodes.push_back(node);
-    tinygltf::Scene scene;
-    scene.nodes.push_back(0);
-    model.scenes.push_back(scene);
-    model.asset.version = "2.0";
     const fs::path path = fs::temp_directory_path() / ("radiant_strip_" + std::to_string(getpid()) +
                                                        "_" + std::to_string(scale[0] < 0) + ".glb");
-    std::ofstream out(path, std::ios::binary);
-    tinygltf::TinyGLTF writer;
-    EXPECT_TRUE(writer.WriteGltfSceneToStream(&model, out, false, true));
+    std::ofstream(path, std::ios::binary) << test::single_primitive_glb(
+        {0, 0, 0, 1, 0, 0, 0, 0, -1, 1, 0, -1}, {}, TINYGLTF_MODE_TRIANGLE_STRIP, scale);
     return path;
 }
 

@@ -1,16 +1,15 @@
 // The same furnished room three ways — native polygons and boxes, an OBJ export and a glTF
 // export of the same faces — solves to the same sensor values within the solve tolerance.
 #include <gtest/gtest.h>
-#include <tiny_gltf.h>
 #include <unistd.h>
 
 #include <array>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "glb_writer.h"
 #include "gltf_axes.h"
 #include "radiant/proto/scene_json.h"
 #include "radiant/solve.h"
@@ -94,49 +93,7 @@ std::string glb_bytes(const std::vector<Quad>& faces) {
         }
         indices.insert(indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
     }
-    tinygltf::Model model;
-    tinygltf::Buffer buffer;
-    buffer.data.resize(positions.size() * 4 + indices.size() * 4);
-    std::memcpy(buffer.data.data(), positions.data(), positions.size() * 4);
-    std::memcpy(buffer.data.data() + positions.size() * 4, indices.data(), indices.size() * 4);
-    model.buffers.push_back(buffer);
-    tinygltf::BufferView vertex_view, index_view;
-    vertex_view.buffer = index_view.buffer = 0;
-    vertex_view.byteLength = positions.size() * 4;
-    index_view.byteOffset = positions.size() * 4;
-    index_view.byteLength = indices.size() * 4;
-    model.bufferViews = {vertex_view, index_view};
-    tinygltf::Accessor vertex_accessor, index_accessor;
-    vertex_accessor.bufferView = 0;
-    vertex_accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    vertex_accessor.count = positions.size() / 3;
-    vertex_accessor.type = TINYGLTF_TYPE_VEC3;
-    vertex_accessor.minValues = {-1e3, -1e3, -1e3};
-    vertex_accessor.maxValues = {1e3, 1e3, 1e3};
-    index_accessor.bufferView = 1;
-    index_accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    index_accessor.count = indices.size();
-    index_accessor.type = TINYGLTF_TYPE_SCALAR;
-    model.accessors = {vertex_accessor, index_accessor};
-    tinygltf::Primitive primitive;
-    primitive.attributes["POSITION"] = 0;
-    primitive.indices = 1;
-    primitive.mode = TINYGLTF_MODE_TRIANGLES;
-    tinygltf::Mesh mesh;
-    mesh.primitives.push_back(primitive);
-    model.meshes.push_back(mesh);
-    tinygltf::Node node;
-    node.mesh = 0;
-    model.nodes.push_back(node);
-    tinygltf::Scene scene;
-    scene.nodes.push_back(0);
-    model.scenes.push_back(scene);
-    model.defaultScene = 0;
-    model.asset.version = "2.0";
-    std::ostringstream out;
-    tinygltf::TinyGLTF writer;
-    EXPECT_TRUE(writer.WriteGltfSceneToStream(&model, out, false, true));
-    return out.str();
+    return test::single_primitive_glb(positions, indices, TINYGLTF_MODE_TRIANGLES);
 }
 
 class ModelRoundTrip : public ::testing::Test {
