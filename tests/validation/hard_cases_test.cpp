@@ -185,6 +185,18 @@ TEST(TinyBrightEmitter, FarFieldInverseSquareInABlackRoom) {
     }
 }
 
+// Black walls carry no light, so their links stay coarse; their factors must not let the
+// emitter's exact light be scaled up when the factor sum is completed.
+TEST(TinyBrightEmitter, EnergyBalanceInABlackRoom) {
+    const double tolerance = 0.01;
+    const Result r = solve_hierarchical(room_with_tiny_emitter(0.0), tolerance);
+    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+    expect_finite(r);
+    EXPECT_NEAR(absorbed_over_emitted(r), 1.0, tolerance)
+        << "absorbed " << r.stats.absorbed_flux_lm << ", emitted " << r.stats.emitted_flux_lm
+        << "; " << describe(r);
+}
+
 TEST(TinyBrightEmitter, EnergyBalanceInAGreyRoom) {
     const double tolerance = 0.01;
     const Result r = solve_hierarchical(room_with_tiny_emitter(0.7), tolerance);

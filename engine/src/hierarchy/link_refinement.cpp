@@ -58,10 +58,15 @@ public:
         const bool split_s = tree_.can_subdivide(p.source);
         const Decision split = choose_split(r, s, split_r, split_s);
 
+        // A cluster stands in for its parts only from afar: near it, the point-to-disk kernels of
+        // its samples misjudge the factor — even a black cluster's, whose factor still counts
+        // when a receiver's factor sum is completed to 1.
+        const bool clusters = r.cluster || s.cluster;
+        if (clusters && split != Decision::link && near_cluster(r, s)) return {split, {}};
+
         // Decide from the unoccluded kernel first: most splits need no shadow ray at all.
         const KernelSamples open = kernel(r, s, p, false, rays);
         if (open.factor <= 0) return {};
-        const bool clusters = r.cluster || s.cluster;
         const double open_error = power_per_factor * (clusters ? open.factor : open.spread);
         if (open_error > limit && split != Decision::link) return {split, {}};
 
@@ -104,6 +109,19 @@ private:
             if (dot(c - surface->polygon[0], surface->normal) > 0) return true;
         }
         return false;
+    }
+
+    // Closer than a cluster's own size: the gap between the bounding boxes is under the
+    // diameter of the larger cluster of the pair.
+    static bool near_cluster(const Element& r, const Element& s) {
+        double gap2 = 0;
+        for (int a = 0; a < 3; ++a) {
+            const double d = std::max({r.lo[a] - s.hi[a], s.lo[a] - r.hi[a], 0.0});
+            gap2 += d * d;
+        }
+        const double size =
+            std::max(r.cluster ? r.diameter_m : 0.0, s.cluster ? s.diameter_m : 0.0);
+        return gap2 < size * size;
     }
 
     // HSA91: split the element that looks bigger from the other; area is a fair proxy. Clusters
