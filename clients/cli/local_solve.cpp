@@ -55,6 +55,10 @@ void add_solve_flags(CLI::App& command, SolveFlags& flags) {
     command.add_option("--threads", flags.threads, "worker threads, 0 for all cores")
         ->check(CLI::NonNegativeNumber);
     command.add_option("--method", flags.method, "solver")->check(CLI::IsMember(solver_names()));
+    command
+        .add_option("--max-memory-mb", flags.max_memory_mb,
+                    "memory budget of the hierarchical solver (default: half the physical memory)")
+        ->check(CLI::PositiveNumber);
 }
 
 std::optional<Scene> load_checked_scene(const std::string& scene_file) {
@@ -71,6 +75,9 @@ Result solve_locally(const Scene& scene, const SolveFlags& flags, bool want_mesh
     if (flags.max_seconds) options.max_seconds = *flags.max_seconds;
     if (flags.threads) options.threads = *flags.threads;
     if (flags.method) options.method = *flags.method;
+    if (flags.max_memory_mb) {
+        options.max_memory_bytes = static_cast<std::size_t>(*flags.max_memory_mb * 1024 * 1024);
+    }
     options.want_mesh = want_mesh;
     std::optional<ProgressLine> progress;
     if (::isatty(STDERR_FILENO)) progress.emplace();

@@ -18,9 +18,10 @@ struct SolveFlags {
     std::optional<double> max_seconds;
     std::optional<int> threads;
     std::optional<std::string> method;
+    std::optional<double> max_memory_mb;
 };
 
-/// Registers --tolerance, --max-seconds, --threads and --method on a subcommand.
+/// Registers --tolerance, --max-seconds, --threads, --method and --max-memory-mb on a subcommand.
 void add_solve_flags(CLI::App& command, SolveFlags& flags);
 
 /// Loads and checks `scene_file`; on problems prints them (`FILE: /pointer: message`) and gives

@@ -302,6 +302,9 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     } else {
         SolveOptions options = options_from(outcome.scene->settings);
         options.threads = options_.solve_threads;
+        // Concurrent solves share the machine: each may use its part of half the memory.
+        options.max_memory_bytes =
+            physical_memory_bytes() / (2 * std::max<std::size_t>(1, options_.workers));
         options.snapshot_interval_seconds = kSnapshotSeconds;
         if (options_.job_seconds) {
             options.max_seconds = std::min(options.max_seconds.value_or(*options_.job_seconds),

@@ -1,4 +1,4 @@
-// A coarser tolerance must never cost the hierarchical solver more. Its root patches grow with
+// A coarser tolerance must never cost the hierarchical solver more, and a memory budget holds. Its root patches grow with
 // the tolerance; parallel surfaces within a gap that grew with them cut every root along their
 // outlines, and in a furnished office a solve at 0.3 took more time and memory than at 0.03.
 #include <gtest/gtest.h>
@@ -34,10 +34,11 @@ Scene small_office() {
     return scene;
 }
 
-Result solve_at(const Scene& scene, double tolerance) {
+Result solve_at(const Scene& scene, double tolerance, std::size_t max_memory_bytes = 0) {
     SolveOptions options;
     options.method = "hierarchical";
     options.tolerance = tolerance;
+    options.max_memory_bytes = max_memory_bytes;
     return solve(scene, options);
 }
 
@@ -50,6 +51,26 @@ TEST(HierarchicalCost, CoarserToleranceIsNotDearer) {
     EXPECT_LE(coarse.stats.patches, fine.stats.patches);
     EXPECT_LE(coarse.stats.elements, fine.stats.elements);
     EXPECT_LE(coarse.stats.links, fine.stats.links);
+}
+
+// Past its memory budget the solver links pairs where they stand: a coarser, honest answer
+// marked `stopped`, never a crash or the whole machine's memory.
+TEST(HierarchicalCost, MemoryBudgetStopsRefinementNotTheSolve) {
+    const Scene scene = small_office();
+    const Result free = solve_at(scene, 0.01);
+    ASSERT_EQ(free.status, SolveStatus::converged) << free.error;
+    const std::size_t budget = 4u << 20;
+    const Result tight = solve_at(scene, 0.01, budget);
+    ASSERT_EQ(tight.status, SolveStatus::stopped) << tight.error;
+    EXPECT_LT(tight.stats.elements, free.stats.elements / 2);
+    // An element with its polygon and quadrature points holds several hundred bytes.
+    EXPECT_LT(tight.stats.elements * 300, budget);
+    ASSERT_EQ(tight.surfaces.size(), free.surfaces.size());
+    for (std::size_t i = 0; i < free.surfaces.size(); ++i) {
+        const double want = free.surfaces[i].average_irradiance;
+        EXPECT_NEAR(tight.surfaces[i].average_irradiance, want, 0.1 * want + 1e-9)
+            << free.surfaces[i].name;
+    }
 }
 
 }  // namespace

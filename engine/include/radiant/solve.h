@@ -22,7 +22,13 @@ struct SolveOptions {
     bool want_mesh = false;             ///< fill Result::mesh
     /// Least time between two snapshots handed to SolveObserver::on_snapshot while solving.
     double snapshot_interval_seconds = 0.5;
+    /// The hierarchical solver's elements stop splitting before they and their links would
+    /// hold more (the result is then `stopped`); 0: half the machine's physical memory.
+    std::size_t max_memory_bytes = 0;
 };
+
+/// The machine's physical memory in bytes (0 if unknown).
+std::size_t physical_memory_bytes();
 
 /// Options from a scene's own `settings`; command-line flags override fields afterwards.
 SolveOptions options_from(const Settings& settings);

@@ -70,7 +70,7 @@ int ElementTree::add_surface(std::vector<Vec3> polygon, const Vec3& normal, int 
         e.samples.push_back({q.position, normal, q.weight});
     }
     fill_bounds(e);
-    elements_.push_back(std::move(e));
+    append(std::move(e));
     return static_cast<int>(elements_.size() - 1);
 }
 
@@ -143,10 +143,16 @@ int ElementTree::build_clusters(std::vector<int>& items, std::size_t begin, std:
         const Vec3 x = stratified_points(r.polygon, 1, u).front();
         c.samples.push_back({x, r.normal, total / kClusterSamples, contents[at]});
     }
-    elements_.push_back(std::move(c));
+    append(std::move(c));
     elements_[static_cast<std::size_t>(left)].parent = static_cast<int>(index);
     elements_[static_cast<std::size_t>(right)].parent = static_cast<int>(index);
     return static_cast<int>(index);
+}
+
+void ElementTree::append(Element&& e) {
+    footprint_ += sizeof(Element) + e.polygon.capacity() * sizeof(Vec3) +
+                  e.samples.capacity() * sizeof(SamplePoint) + e.children.capacity() * sizeof(int);
+    elements_.push_back(std::move(e));
 }
 
 bool ElementTree::can_subdivide(int e) const {
@@ -167,6 +173,7 @@ void ElementTree::subdivide(int e) {
         child.radiosity_max = parent.radiosity_max;
         children.push_back(c);
     }
+    footprint_ += children.capacity() * sizeof(int);
     elements_[static_cast<std::size_t>(e)].children = std::move(children);
 }
 

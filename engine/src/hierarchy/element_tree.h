@@ -78,7 +78,13 @@ public:
 
     std::size_t leaf_count() const;
 
+    /// Memory the tree holds (elements, their polygons, samples and child lists), in bytes.
+    std::size_t bytes() const {
+        return footprint_ + (elements_.capacity() - elements_.size()) * sizeof(Element);
+    }
+
 private:
+    void append(Element&& e);
     int add_surface(std::vector<Vec3> polygon, const Vec3& normal, int patch, int parent,
                     int depth);
     int build_clusters(std::vector<int>& items, std::size_t begin, std::size_t end);
@@ -92,6 +98,7 @@ private:
     double min_edge_m_;
     std::uint64_t seed_;
     std::vector<Element> elements_;
+    std::size_t footprint_ = 0;  // Σ over elements of what each holds
     int top_ = -1;
 };
 

@@ -48,14 +48,15 @@ public:
     Oracle(const ElementTree& tree, const Visibility& visibility, const RefinementCriteria& c)
         : tree_(tree), visibility_(visibility), criteria_(c), eps_(visibility.epsilon()) {}
 
-    Verdict judge(const Pair& p, std::uint64_t& rays) const {
+    /// `may_split` false: only elements that already have children may be split.
+    Verdict judge(const Pair& p, bool may_split, std::uint64_t& rays) const {
         const Element& r = tree_[static_cast<std::size_t>(p.receiver)];
         const Element& s = tree_[static_cast<std::size_t>(p.source)];
         if (!may_exchange(r, s)) return {};
         const double power_per_factor = r.area_m2 * s.radiosity_max;
         const double limit = criteria_.power_epsilon_lm;
-        const bool split_r = tree_.can_subdivide(p.receiver);
-        const bool split_s = tree_.can_subdivide(p.source);
+        const bool split_r = tree_.can_subdivide(p.receiver) && (may_split || !r.leaf());
+        const bool split_s = tree_.can_subdivide(p.source) && (may_split || !s.leaf());
         const Decision split = choose_split(r, s, split_r, split_s);
 
         // A cluster stands in for its parts only from afar: near it, the point-to-disk kernels of
@@ -249,9 +250,13 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
                 interrupted = true;
                 return;
             }
-            verdicts[i] = oracle.judge(pairs[i], rays.local());
+            verdicts[i] = oracle.judge(pairs[i], !out.budget_reached, rays.local());
         });
-        out.rays += rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
+        auto count_rays = [&] {
+            out.rays += rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
+            rays.clear();
+        };
+        count_rays();
         if (interrupted) {
             // Keep what was judged to link; splitting would only queue pairs nobody judges.
             for (std::size_t i = 0; i < pairs.size(); ++i) {
@@ -263,12 +268,15 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
 
         pending.clear();
         const std::size_t first_new = tree.size();
-        for (std::size_t i = 0; i < pairs.size(); ++i) {
+        std::vector<std::size_t> rejudge;  // splits the budget refused: judged again unsplit
+        auto over_budget = [&] {
+            const std::size_t held = tree.bytes() + out.links.capacity() * sizeof(Link) +
+                                     pending.capacity() * sizeof(Pair);
+            if (criteria.max_bytes > 0 && held > criteria.max_bytes) out.budget_reached = true;
+            return out.budget_reached;
+        };
+        auto apply = [&](std::size_t i) {
             const Pair& p = pairs[i];
-            if (p.receiver == p.source) {
-                pending.push_back(p);
-                continue;
-            }
             const Verdict& v = verdicts[i];
             switch (v.decision) {
                 case Decision::drop:
@@ -277,18 +285,36 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
                     add_links(p, v);
                     break;
                 case Decision::split_receiver:
-                    tree.subdivide(p.receiver);
-                    for (const int c : tree[static_cast<std::size_t>(p.receiver)].children) {
-                        pending.push_back({c, p.source});
+                case Decision::split_source: {
+                    const bool receiver = v.decision == Decision::split_receiver;
+                    const int e = receiver ? p.receiver : p.source;
+                    if (tree[static_cast<std::size_t>(e)].leaf() && over_budget()) {
+                        rejudge.push_back(i);
+                        break;
+                    }
+                    tree.subdivide(e);
+                    for (const int c : tree[static_cast<std::size_t>(e)].children) {
+                        pending.push_back(receiver ? Pair{c, p.source} : Pair{p.receiver, c});
                     }
                     break;
-                case Decision::split_source:
-                    tree.subdivide(p.source);
-                    for (const int c : tree[static_cast<std::size_t>(p.source)].children) {
-                        pending.push_back({p.receiver, c});
-                    }
-                    break;
+                }
             }
+        };
+        for (std::size_t i = 0; i < pairs.size(); ++i) {
+            if (pairs[i].receiver == pairs[i].source) {
+                pending.push_back(pairs[i]);
+            } else {
+                apply(i);
+            }
+        }
+        if (!rejudge.empty()) {
+            tbb::parallel_for(std::size_t{0}, rejudge.size(), [&](std::size_t k) {
+                verdicts[rejudge[k]] = oracle.judge(pairs[rejudge[k]], false, rays.local());
+            });
+            const std::vector<std::size_t> unsplit = std::move(rejudge);
+            rejudge.clear();
+            for (const std::size_t i : unsplit) apply(i);
+            count_rays();
         }
         if (tree.size() > first_new) {
             out.rays += tree.light_from(first_new);

@@ -28,17 +28,20 @@ struct RefinementCriteria {
     std::uint64_t seed = 1;
     double ambient_irradiance = 0;  ///< guess of the reflected light, for new elements' estimates
     int channels = 1;
+    std::size_t max_bytes = 0;          ///< memory budget of the tree and links; 0: none
     std::function<bool()> should_stop;  ///< polled between rounds and pairs, from any thread
 };
 
 struct RefinementOutcome {
     std::vector<Link> links;  ///< sorted by receiver, then source
     std::uint64_t rays = 0;
-    bool stopped = false;
+    bool stopped = false;         ///< cancelled or out of time: pairs were left unlinked
+    bool budget_reached = false;  ///< elements stopped splitting at the memory budget
 };
 
 /// Links every pair of elements that exchange light. Splits elements of `tree` as it goes
 /// (and lights the new ones); uses `radiosity_max` of the elements as the source estimate.
+/// Once the tree and links would outgrow `max_bytes`, pairs link where they stand instead.
 /// Parallel over candidate pairs; deterministic for any thread count.
 RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
                                const RefinementCriteria& criteria);

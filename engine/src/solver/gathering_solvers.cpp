@@ -34,10 +34,9 @@ SolverOutcome iterate(const LinearSystem& s, const SolverControl& control, Sweep
         for (int c = 0; c < s.channels; ++c) {
             const auto ci = static_cast<std::size_t>(c);
             const auto [d_inf, d_a1] = sweep(ci, out.radiosity[ci]);
-            worst = std::max(worst, relative_error_bound(q[ci], q[ci].q_inf * d_inf,
-                                                         q[ci].q_1 * d_a1,
-                                                         area_weighted_sum(out.radiosity[ci], s.area_m2),
-                                                         area));
+            worst = std::max(
+                worst, relative_error_bound(q[ci], q[ci].q_inf * d_inf, q[ci].q_1 * d_a1,
+                                            area_weighted_sum(out.radiosity[ci], s.area_m2), area));
         }
         ++out.iterations;
         out.error_estimate = worst;

@@ -25,6 +25,9 @@ constexpr double kMinEdgeFactor = 0.25;
 constexpr double kLinkPowerFraction = 2.5e-4;
 // A node may add this fraction of tolerance × the mean irradiance to a sensor unopened.
 constexpr double kGatherIrradianceFraction = 0.02;
+// Share of the memory budget the element tree and links may take; the sweeps, the sorted copy
+// of the links and the meshes need the rest.
+constexpr double kRefinementMemoryShare = 0.6;
 // Root patches beyond this would not fit the element budget.
 constexpr std::size_t kMaxRootPatches = 2'000'000;
 // Snapshots show the root patches until the links are refined, then the leaves of the hierarchy.
@@ -96,6 +99,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     criteria.ambient_irradiance = ambient;
     criteria.channels = channels;
     criteria.should_stop = [this] { return should_stop(); };
+    const std::size_t budget =
+        options_.max_memory_bytes > 0 ? options_.max_memory_bytes : physical_memory_bytes() / 2;
+    criteria.max_bytes =
+        static_cast<std::size_t>(kRefinementMemoryShare * static_cast<double>(budget));
     RefinementOutcome linked = refine_links(tree, visibility, criteria);
     rays_ += linked.rays;
     elements_ = tree.leaf_count();
@@ -114,7 +121,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         };
     }
     const HierarchicalOutcome outcome = system.solve(control, publish);
-    const bool stopped = linked.stopped || !outcome.converged;
+    const bool stopped = linked.stopped || linked.budget_reached || !outcome.converged;
 
     std::vector<SolvedElement> solved;
     for (std::size_t e = 0; e < tree.size(); ++e) {

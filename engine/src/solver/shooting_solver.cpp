@@ -11,7 +11,8 @@ double shooting_relaxation(const LinearSystem& s) {
     double area = 0, rho_area = 0;
     for (std::size_t i = 0; i < s.n; ++i) {
         double rho = 0;
-        for (int c = 0; c < s.channels; ++c) rho = std::max(rho, s.reflectance[static_cast<std::size_t>(c)][i]);
+        for (int c = 0; c < s.channels; ++c)
+            rho = std::max(rho, s.reflectance[static_cast<std::size_t>(c)][i]);
         area += s.area_m2[i];
         rho_area += s.area_m2[i] * rho;
     }
@@ -54,8 +55,8 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
                 sum_ab += s.area_m2[i] * (shot[ci][i] + unshot[ci][i]);
             }
             unshot_power = std::max(unshot_power, u_a1);
-            worst = std::max(worst, relative_error_bound(q[ci], q[ci].q_inf * u_inf, q[ci].q_1 * u_a1,
-                                                         sum_ab, total_area));
+            worst = std::max(worst, relative_error_bound(q[ci], q[ci].q_inf * u_inf,
+                                                         q[ci].q_1 * u_a1, sum_ab, total_area));
         }
         unshot_fraction = emitted > 0 ? unshot_power / emitted : 0;
         return worst;
@@ -94,7 +95,8 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
         double best = -1;
         for (std::size_t i = 0; i < n; ++i) {
             double p = 0;
-            for (int c = 0; c < channels; ++c) p += std::abs(unshot[static_cast<std::size_t>(c)][i]);
+            for (int c = 0; c < channels; ++c)
+                p += std::abs(unshot[static_cast<std::size_t>(c)][i]);
             p *= s.area_m2[i];
             if (p > best) {
                 best = p;
@@ -121,7 +123,8 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
     for (int c = 0; c < channels; ++c) {
         const auto ci = static_cast<std::size_t>(c);
         out.radiosity[ci].resize(n);
-        for (std::size_t i = 0; i < n; ++i) out.radiosity[ci][i] = std::max(0.0, shot[ci][i] + unshot[ci][i]);
+        for (std::size_t i = 0; i < n; ++i)
+            out.radiosity[ci][i] = std::max(0.0, shot[ci][i] + unshot[ci][i]);
         out.unshot[ci] = std::move(unshot[ci]);
     }
     return out;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <tbb/task_arena.h>
 
 #include "solver/pipeline.h"
@@ -52,6 +54,12 @@ Result solve(const Scene& scene, const SolveOptions& options, SolveObserver* obs
         result.error = std::string("internal error: ") + e.what();
     }
     return result;
+}
+
+std::size_t physical_memory_bytes() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && page > 0 ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(page)
+                                 : 0;
 }
 
 SolveOptions options_from(const Settings& settings) {
