@@ -39,6 +39,39 @@ private:
     std::chrono::steady_clock::time_point last_;
 };
 
+/// Every snapshot as one line on stderr: what the solve has reached, its error bound and work,
+/// and each sensor set's average and minimum once the solver has sensor values.
+class SnapshotLines : public SolveObserver {
+public:
+    void on_progress(const Progress&) override {}
+
+    void on_snapshot(const Snapshot& s) override {
+        const Progress& p = s.progress;
+        const std::lock_guard lock(mutex_);
+        std::fprintf(stderr, "snapshot %3llu%s %7.2f s  %-12s",
+                     static_cast<unsigned long long>(s.version), s.final ? " (final)" : "",
+                     p.elapsed_seconds, p.stage.c_str());
+        // Before the first sweep there is no error bound yet.
+        if (p.iterations > 0 || s.final) {
+            std::fprintf(stderr, " error %.2e", p.error_estimate);
+        } else {
+            std::fprintf(stderr, " error    -    ");
+        }
+        std::fprintf(stderr, "  rays %llu  elements %zu  links %zu",
+                     static_cast<unsigned long long>(p.rays), p.elements, p.links);
+        if (s.sensors) {
+            for (const SensorResult& set : *s.sensors) {
+                std::fprintf(stderr, "  %s: %.1f lx (min %.1f)", set.name.c_str(), set.average,
+                             set.min);
+            }
+        }
+        std::fputc('\n', stderr);
+    }
+
+private:
+    std::mutex mutex_;
+};
+
 }  // namespace
 
 void add_solve_flags(CLI::App& command, SolveFlags& flags) {
@@ -59,6 +92,9 @@ void add_solve_flags(CLI::App& command, SolveFlags& flags) {
         .add_option("--max-memory-mb", flags.max_memory_mb,
                     "memory budget of the hierarchical solver (default: half the physical memory)")
         ->check(CLI::PositiveNumber);
+    command.add_flag("--progress", flags.progress,
+                     "print every progressive snapshot (error, rays, elements, links, sensor "
+                     "averages) as a line on stderr");
 }
 
 std::optional<Scene> load_checked_scene(const std::string& scene_file) {
@@ -79,6 +115,10 @@ Result solve_locally(const Scene& scene, const SolveFlags& flags, bool want_mesh
         options.max_memory_bytes = static_cast<std::size_t>(*flags.max_memory_mb * 1024 * 1024);
     }
     options.want_mesh = want_mesh;
+    if (flags.progress) {
+        SnapshotLines lines;
+        return solve(scene, options, &lines);
+    }
     std::optional<ProgressLine> progress;
     if (::isatty(STDERR_FILENO)) progress.emplace();
     return solve(scene, options, progress ? &*progress : nullptr);

@@ -19,9 +19,11 @@ struct SolveFlags {
     std::optional<int> threads;
     std::optional<std::string> method;
     std::optional<double> max_memory_mb;
+    bool progress = false;  ///< print every snapshot as a line on stderr
 };
 
-/// Registers --tolerance, --max-seconds, --threads, --method and --max-memory-mb on a subcommand.
+/// Registers --tolerance, --max-seconds, --threads, --method, --max-memory-mb and --progress on
+/// a subcommand.
 void add_solve_flags(CLI::App& command, SolveFlags& flags);
 
 /// Loads and checks `scene_file`; on problems prints them (`FILE: /pointer: message`) and gives

@@ -85,23 +85,28 @@ nlohmann::json document(const Result& result, const char* status, const std::str
 
 }  // namespace
 
+nlohmann::json sensors_to_json(const std::vector<SensorResult>& sensors) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const SensorResult& s : sensors) {
+        nlohmann::json& set = out.emplace_back(nlohmann::json{{"name", s.name},
+                                                              {"illuminance", s.illuminance},
+                                                              {"min", s.min},
+                                                              {"max", s.max},
+                                                              {"average", s.average},
+                                                              {"uniformity", s.uniformity},
+                                                              {"u0", s.u0},
+                                                              {"ud", s.ud}});
+        if (s.grid) set["grid"] = grid_json(*s.grid);
+    }
+    return out;
+}
+
 nlohmann::json result_to_json(const Result& result) {
     const bool failed = result.status == SolveStatus::failed;
     nlohmann::json doc = document(result, to_string(result.status),
                                   failed && result.error.empty() ? "unknown error" : result.error);
     doc["stats"] = stats_json(result.stats);
-    nlohmann::json& sensors = doc["sensors"] = nlohmann::json::array();
-    for (const SensorResult& s : result.sensors) {
-        nlohmann::json& set = sensors.emplace_back(nlohmann::json{{"name", s.name},
-                                                                  {"illuminance", s.illuminance},
-                                                                  {"min", s.min},
-                                                                  {"max", s.max},
-                                                                  {"average", s.average},
-                                                                  {"uniformity", s.uniformity},
-                                                                  {"u0", s.u0},
-                                                                  {"ud", s.ud}});
-        if (s.grid) set["grid"] = grid_json(*s.grid);
-    }
+    doc["sensors"] = sensors_to_json(result.sensors);
     nlohmann::json& surfaces = doc["surfaces"] = nlohmann::json::array();
     for (const SurfaceResult& s : result.surfaces) {
         surfaces.push_back({{"name", s.name},

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "radiant/proto/result_gltf.h"
+#include "radiant/proto/result_json.h"
 #include "radiant/proto/scene_json.h"
 
 namespace radiant::server::handlers {
@@ -49,8 +50,9 @@ Response job_response(const Request& request, http::status status, const JobReco
     return response;
 }
 
-/// The latest state of a running job as a radiant-result/1 document: statistics so far and its
-/// progress. Sensors and surface averages are computed only at the end of a solve.
+/// The latest state of a running job as a radiant-result/1 document: statistics so far, its
+/// progress, and the sensor values of its latest snapshot that had some (surface averages are
+/// computed only at the end of a solve).
 nlohmann::json running_result(ServiceContext& ctx, const JobRecord& job,
                               const JobSnapshot* snapshot) {
     const JobProgress& p = job.progress;
@@ -69,6 +71,8 @@ nlohmann::json running_result(ServiceContext& ctx, const JobRecord& job,
     if (snapshot) {
         doc["snapshot"] = {{"version", snapshot->info().version},
                            {"mesh_version", snapshot->info().mesh_version}};
+        if (snapshot->info().sensors)
+            doc["sensors"] = proto::sensors_to_json(*snapshot->info().sensors);
     }
     return doc;
 }

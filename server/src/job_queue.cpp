@@ -62,6 +62,7 @@ struct JobQueue::LiveJob final : SolveObserver {
         info.mesh_event_id = same_mesh ? snapshot->info().mesh_event_id : ++last_event_id;
         info.radiosity_event_id = ++last_event_id;
         info.progress = job_progress(s.progress, record.progress.sequence);
+        info.sensors = s.sensors;
         snapshot = std::make_shared<const JobSnapshot>(id, std::move(info), s.mesh);
         // Linking reports no progress for seconds; the status still shows the time going by.
         record.progress.elapsed_seconds =

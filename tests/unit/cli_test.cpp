@@ -69,16 +69,30 @@ TEST(Cli, SolveBadFileWritesNothing) {
 
 TEST(Cli, SolveRefusesBadFlags) {
     const std::string solve = "solve '" + data("good/minimal.json") + "' ";
-    for (const char* flags : {"--tolerance 1.5", "--threads -1", "--method magic"}) {
+    for (const char* flags :
+         {"--tolerance 1.5", "--threads -1", "--method magic", "--max-memory-mb 0"}) {
         EXPECT_EQ(run(solve + flags).exit_code, 2) << flags;
     }
 }
 
 TEST(Cli, SolveWritesAResultDocument) {
     const CliRun r = run("solve '" + data("good/minimal.json") + "' --tolerance 0.1");
-    // The solver is still a placeholder that fails; the document must be complete anyway.
-    EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.err;
+    EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("\"format\": \"radiant-result/1\""), std::string::npos) << r.out;
+}
+
+// --progress prints every snapshot as a line; the last is the result's, with its sensors.
+TEST(Cli, ProgressPrintsEverySnapshot) {
+    const CliRun r = run("solve '" + data("good/all-features.json") +
+                         "' --tolerance 0.1 --max-memory-mb 64 --progress");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto final_line = r.err.rfind("snapshot ");
+    ASSERT_NE(final_line, std::string::npos) << r.err;
+    const std::string last = r.err.substr(final_line);
+    EXPECT_NE(last.find("(final)"), std::string::npos) << last;
+    EXPECT_NE(last.find("workplane: "), std::string::npos) << last;
+    EXPECT_NE(last.find(" lx (min "), std::string::npos) << last;
+    EXPECT_EQ(r.err.find('\r'), std::string::npos) << "lines, not a rewritten progress line";
 }
 
 }  // namespace

@@ -56,6 +56,39 @@ TEST(Snapshots, VersionedWhileSolvingAndFinalEqualsResult) {
         }
         EXPECT_EQ(last.mesh->triangle_radiosity, r.mesh->triangle_radiosity) << method;
         EXPECT_EQ(last.progress.error_estimate, r.stats.error_estimate) << method;
+        ASSERT_TRUE(last.sensors) << method;
+        ASSERT_EQ(last.sensors->size(), r.sensors.size()) << method;
+        for (std::size_t i = 0; i < r.sensors.size(); ++i) {
+            EXPECT_EQ((*last.sensors)[i].illuminance, r.sensors[i].illuminance) << method;
+        }
+    }
+}
+
+// While the hierarchical solver sweeps, snapshots carry sensor values gathered from the current
+// radiosity: previews that end near the result's.
+TEST(Snapshots, HierarchicalSweepsPreviewTheSensors) {
+    Scene scene = testing::room_with_ceiling_panel(0.9, 1000.0);
+    scene.sensors = {testing::sensor_points("desk", {{1, 1, 0.8}, {2, 2, 0.8}, {3.5, 2, 0.8}})};
+    SolveOptions options = options_from(scene.settings);
+    options.method = "hierarchical";
+    options.tolerance = 0.01;
+    options.snapshot_interval_seconds = 0;
+    SnapshotRecorder recorder;
+    const Result r = solve(scene, options, &recorder);
+    ASSERT_EQ(r.status, SolveStatus::converged) << r.error;
+    ASSERT_FALSE(r.sensors.empty());
+    const auto preview = std::find_if(recorder.snapshots.begin(), recorder.snapshots.end(),
+                                      [](const Snapshot& s) { return s.sensors && !s.final; });
+    ASSERT_NE(preview, recorder.snapshots.end()) << "no preview among "
+                                                 << recorder.snapshots.size() << " snapshots";
+    ASSERT_EQ(preview->sensors->size(), r.sensors.size());
+    for (std::size_t i = 0; i < r.sensors.size(); ++i) {
+        const auto& got = (*preview->sensors)[i];
+        EXPECT_EQ(got.name, r.sensors[i].name);
+        ASSERT_EQ(got.illuminance.size(), r.sensors[i].illuminance.size());
+        // A preview lacks the sweeps still to come: never more light, and not far off.
+        EXPECT_GT(got.average, 0.2 * r.sensors[i].average) << got.name;
+        EXPECT_LT(got.average, 1.05 * r.sensors[i].average) << got.name;
     }
 }
 

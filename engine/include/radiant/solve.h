@@ -64,6 +64,9 @@ struct Snapshot {
     std::uint64_t version = 0;               ///< 1, 2, … in publication order
     std::uint64_t mesh_version = 0;          ///< changes only when the geometry (triangles) changes
     std::shared_ptr<const SolvedMesh> mesh;  ///< world coordinates; radiosity of this snapshot
+    /// Sensor values of the latest solution that had them (the final snapshot: the result's);
+    /// null until the solver has some.
+    std::shared_ptr<const std::vector<SensorResult>> sensors;
     Progress progress;
     bool final = false;  ///< the last snapshot: its values are the result's
 };

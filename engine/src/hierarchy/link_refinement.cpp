@@ -220,7 +220,8 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
             out.links.push_back({p.receiver, part.element, static_cast<float>(part.factor)});
         }
     };
-    while (!pending.empty()) {
+    for (int round = 0; !pending.empty(); ++round) {
+        if (criteria.on_round) criteria.on_round(round, out.rays, out.links.size());
         if (criteria.should_stop && criteria.should_stop()) {
             out.stopped = true;
             break;

@@ -30,6 +30,8 @@ struct RefinementCriteria {
     int channels = 1;
     std::size_t max_bytes = 0;          ///< memory budget of the tree and links; 0: none
     std::function<bool()> should_stop;  ///< polled between rounds and pairs, from any thread
+    /// Told after each round: rounds done, rays cast and links made so far.
+    std::function<void(int rounds, std::uint64_t rays, std::size_t links)> on_round;
 };
 
 struct RefinementOutcome {

@@ -25,6 +25,10 @@ constexpr double kMinEdgeFactor = 0.25;
 constexpr double kLinkPowerFraction = 2.5e-4;
 // A node may add this fraction of tolerance × the mean irradiance to a sensor unopened.
 constexpr double kGatherIrradianceFraction = 0.02;
+// Snapshots' sensor values gather this much coarser than the result's, and only while a gather
+// takes at most this share of the snapshot interval, so that they never slow the sweeps much.
+constexpr double kSnapshotGatherCoarsening = 10;
+constexpr double kSnapshotGatherShare = 0.25;
 // Share of the memory budget the element tree and links may take; the sweeps, the sorted copy
 // of the links and the meshes need the rest.
 constexpr double kRefinementMemoryShare = 0.6;
@@ -99,25 +103,58 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     criteria.ambient_irradiance = ambient;
     criteria.channels = channels;
     criteria.should_stop = [this] { return should_stop(); };
+    const std::uint64_t rays_before_links = rays_;
+    criteria.on_round = [&](int rounds, std::uint64_t rays, std::size_t links) {
+        rays_ = rays_before_links + rays;
+        elements_ = tree.leaf_count();
+        links_ = links;
+        report("form factors", std::min(0.55, 0.05 + 0.02 * rounds));
+    };
     const std::size_t budget =
         options_.max_memory_bytes > 0 ? options_.max_memory_bytes : physical_memory_bytes() / 2;
     criteria.max_bytes =
         static_cast<std::size_t>(kRefinementMemoryShare * static_cast<double>(budget));
     RefinementOutcome linked = refine_links(tree, visibility, criteria);
-    rays_ += linked.rays;
+    rays_ = rays_before_links + linked.rays;
     elements_ = tree.leaf_count();
     links_ = linked.links.size();
 
     HierarchicalSystem system(tree, linked.links, enclosed, channels);
+    // Sensors gather down the tree from the current radiosity, opening nodes that could add more
+    // than a share of the tolerance × the mean irradiance (`coarsening` times that for previews).
+    auto gather_sensors = [&](double coarsening) {
+        double mean_irradiance = 0;
+        for (std::size_t e = 0; e < tree.size(); ++e) {
+            const Element& x = tree[e];
+            if (x.cluster || !x.leaf()) continue;
+            mean_irradiance +=
+                x.area_m2 * photometric(system.leaf_irradiance(static_cast<int>(e)), channels);
+        }
+        mean_irradiance = area > 0 ? mean_irradiance / area : 0;
+        GatherCriteria gather;
+        gather.irradiance_epsilon =
+            coarsening * kGatherIrradianceFraction * options_.tolerance * mean_irradiance;
+        gather.seed = options_.seed;
+        return gather_sensors_from_tree(scene, tree, visibility, gather, channels, rays_);
+    };
     report("solving", 0.6);
     // Leave most of the budget to the links.
     const SolverControl control = solving_control(options_.tolerance / 4);
     std::function<void()> publish;
+    bool preview_sensors = !scene.sensors.empty();
     if (observer_) {
         publish = [&] {
+            std::shared_ptr<const std::vector<SensorResult>> sensors;
+            if (preview_sensors) {
+                const auto begin = Clock::now();
+                sensors = std::make_shared<const std::vector<SensorResult>>(
+                    gather_sensors(kSnapshotGatherCoarsening));
+                preview_sensors =
+                    Clock::now() - begin <= kSnapshotGatherShare * control.snapshot_interval;
+            }
             snapshots_.offer(std::make_shared<const SolvedMesh>(
                                  leaf_mesh(tree, roots, channels, scene.world_origin)),
-                             kLeafMeshVersion);
+                             kLeafMeshVersion, std::move(sensors));
         };
     }
     const HierarchicalOutcome outcome = system.solve(control, publish);
@@ -143,14 +180,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     // The radiosity is final from here on; the heartbeat shows it while the sensors gather.
     snapshots_.offer(mesh, kLeafMeshVersion);
     report("sensors", 0.9, outcome.iterations, error_estimate, 0);
-    double mean_irradiance = 0;
-    for (const SolvedElement& s : solved)
-        mean_irradiance += s.area_m2 * photometric(s.irradiance, channels);
-    mean_irradiance = area > 0 ? mean_irradiance / area : 0;
-    GatherCriteria gather;
-    gather.irradiance_epsilon = kGatherIrradianceFraction * options_.tolerance * mean_irradiance;
-    gather.seed = options_.seed;
-    result.sensors = gather_sensors_from_tree(scene, tree, visibility, gather, channels, rays_);
+    result.sensors = gather_sensors(1);
 
     SurfaceSummary summary = summarise_surfaces(scene, solved, channels);
     result.surfaces = std::move(summary.surfaces);
@@ -159,7 +189,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
                  channels, stopped);
-    publish_final(mesh, kLeafMeshVersion, error_estimate);
+    publish_final(mesh, kLeafMeshVersion, result);
     return result;
 }
 

@@ -11,7 +11,8 @@ namespace radiant {
 struct LinearSystem {
     std::size_t n = 0;
     int channels = 1;
-    const std::vector<float>* form_factors = nullptr;  ///< row-major n×n, F[i*n+j]: i receives from j
+    const std::vector<float>* form_factors =
+        nullptr;  ///< row-major n×n, F[i*n+j]: i receives from j
     std::vector<double> area_m2;
     std::array<std::vector<double>, 3> reflectance;
     std::array<std::vector<double>, 3> source;  ///< S, lm/m²

@@ -81,10 +81,12 @@ void Pipeline::report(const std::string& stage, double fraction, std::size_t ite
 }
 
 void Pipeline::publish_final(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
-                             double error_estimate) {
+                             const Result& result) {
+    if (!observer_) return;
     Progress progress = last_progress_;
-    progress.error_estimate = error_estimate;
-    snapshots_.finish(std::move(mesh), mesh_version, progress);
+    progress.error_estimate = result.stats.error_estimate;
+    snapshots_.finish(std::move(mesh), mesh_version,
+                      std::make_shared<const std::vector<SensorResult>>(result.sensors), progress);
 }
 
 SolverControl Pipeline::solving_control(double tolerance) const {
@@ -294,7 +296,7 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, std::string(solver ? solver->name() : method), n, outcome.iterations,
                  outcome.error_estimate, outcome.unshot_fraction, channels, stopped);
-    publish_final(mesh, 1, outcome.error_estimate);
+    publish_final(mesh, 1, result);
     return result;
 }
 

@@ -44,9 +44,9 @@ private:
         return (cancel_ && cancel_->cancelled()) || (deadline_ && Clock::now() >= *deadline_);
     }
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-    /// Publishes the result's mesh as the final snapshot, with the result's error estimate.
+    /// Publishes the result's mesh and sensors as the final snapshot, with its error estimate.
     void publish_final(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
-                       double error_estimate);
+                       const Result& result);
     /// Control for the solving stage: `tolerance`, the deadline, cancellation, progress reports
     /// and the snapshot interval of the options.
     SolverControl solving_control(double tolerance) const;

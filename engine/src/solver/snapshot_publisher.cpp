@@ -32,24 +32,34 @@ void SnapshotPublisher::note_progress(const Progress& progress) {
     progress_ = progress;
 }
 
-void SnapshotPublisher::offer(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version) {
+void SnapshotPublisher::offer(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
+                              std::shared_ptr<const std::vector<SensorResult>> sensors) {
     if (!observer_) return;
     const std::lock_guard lock(mutex_);
     if (stopping_) return;
     mesh_ = std::move(mesh);
     mesh_version_ = mesh_version;
+    if (sensors) sensors_ = std::move(sensors);
     latest_sent_ = false;
     if (Clock::now() - last_sent_ >= interval_) publish_locked(false);
     wake_.notify_all();  // the heartbeat plans its next repeat from this
 }
 
+bool SnapshotPublisher::due() const {
+    if (!observer_) return false;
+    const std::lock_guard lock(mutex_);
+    return Clock::now() - last_sent_ >= interval_;
+}
+
 void SnapshotPublisher::finish(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
+                               std::shared_ptr<const std::vector<SensorResult>> sensors,
                                const Progress& progress) {
     if (!observer_) return;
     stop();  // no heartbeat may follow the final snapshot
     const std::lock_guard lock(mutex_);
     mesh_ = std::move(mesh);
     mesh_version_ = mesh_version;
+    sensors_ = std::move(sensors);
     progress_ = progress;
     publish_locked(true);
 }
@@ -60,6 +70,7 @@ void SnapshotPublisher::publish_locked(bool final) {
     snapshot.version = ++version_;
     snapshot.mesh_version = mesh_version_;
     snapshot.mesh = mesh_;
+    snapshot.sensors = sensors_;
     snapshot.progress = progress_;
     snapshot.progress.elapsed_seconds = std::chrono::duration<double>(now - start_).count();
     snapshot.final = final;

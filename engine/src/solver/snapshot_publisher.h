@@ -29,11 +29,15 @@ public:
     /// The progress that snapshots carry from now on (elapsed time is filled in at publication).
     void note_progress(const Progress& progress);
     /// Makes `mesh` the latest state and publishes it now when due, else when the interval has
-    /// passed. `mesh_version` changes exactly when the triangles do.
-    void offer(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version);
+    /// passed. `mesh_version` changes exactly when the triangles do. Sensor values, when given,
+    /// replace the latest ones.
+    void offer(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
+               std::shared_ptr<const std::vector<SensorResult>> sensors = nullptr);
+    /// Whether an offer now would be published at once (the interval has passed).
+    bool due() const;
     /// Stops the heartbeat and publishes the final snapshot (the result's values) at once.
     void finish(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
-                const Progress& progress);
+                std::shared_ptr<const std::vector<SensorResult>> sensors, const Progress& progress);
 
 private:
     void publish_locked(bool final);
@@ -48,6 +52,7 @@ private:
     bool stopping_ = false;
     Progress progress_;
     std::shared_ptr<const SolvedMesh> mesh_;
+    std::shared_ptr<const std::vector<SensorResult>> sensors_;
     std::uint64_t mesh_version_ = 0;
     bool latest_sent_ = true;
     std::uint64_t version_ = 0;

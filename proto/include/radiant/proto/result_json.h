@@ -12,4 +12,7 @@ namespace radiant::proto {
 /// Thread-safe.
 nlohmann::json result_to_json(const Result& result);
 
+/// The `sensors` array of a radiant-result/1 document.
+nlohmann::json sensors_to_json(const std::vector<SensorResult>& sensors);
+
 }  // namespace radiant::proto

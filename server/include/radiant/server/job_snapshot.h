@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "radiant/result.h"
 #include "radiant/server/compact_mesh.h"
@@ -22,6 +23,8 @@ struct SnapshotInfo {
     std::uint64_t radiosity_event_id = 0;  ///< id of this snapshot's `radiosity` event
     bool final = false;                    ///< its values are the result's
     JobProgress progress;                  ///< when it was taken
+    /// The latest sensor values the solver had (null before it had any, and when restored).
+    std::shared_ptr<const std::vector<SensorResult>> sensors;
 };
 
 class JobSnapshot {
