@@ -185,11 +185,14 @@ TEST(TinyBrightEmitter, FarFieldInverseSquareInABlackRoom) {
     }
 }
 
-// Black walls carry no light, so their links stay coarse; their factors must not let the
-// emitter's exact light be scaled up when the factor sum is completed.
-TEST(TinyBrightEmitter, EnergyBalanceInABlackRoom) {
+// In a grey room and in a black one alike: black walls carry no light, so their links stay
+// coarse, yet their factors must not let the emitter's exact light be scaled up when a
+// receiver's factor sum is completed to 1.
+class TinyEmitterEnergyBalance : public ::testing::TestWithParam<double> {};
+
+TEST_P(TinyEmitterEnergyBalance, AbsorbedEqualsEmitted) {
     const double tolerance = 0.01;
-    const Result r = solve_hierarchical(room_with_tiny_emitter(0.0), tolerance);
+    const Result r = solve_hierarchical(room_with_tiny_emitter(GetParam()), tolerance);
     ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
     expect_finite(r);
     EXPECT_NEAR(absorbed_over_emitted(r), 1.0, tolerance)
@@ -197,15 +200,10 @@ TEST(TinyBrightEmitter, EnergyBalanceInABlackRoom) {
         << "; " << describe(r);
 }
 
-TEST(TinyBrightEmitter, EnergyBalanceInAGreyRoom) {
-    const double tolerance = 0.01;
-    const Result r = solve_hierarchical(room_with_tiny_emitter(0.7), tolerance);
-    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
-    expect_finite(r);
-    EXPECT_NEAR(absorbed_over_emitted(r), 1.0, tolerance)
-        << "absorbed " << r.stats.absorbed_flux_lm << ", emitted " << r.stats.emitted_flux_lm
-        << "; " << describe(r);
-}
+INSTANTIATE_TEST_SUITE_P(Walls, TinyEmitterEnergyBalance, ::testing::Values(0.0, 0.7),
+                         [](const ::testing::TestParamInfo<double>& info) {
+                             return info.param == 0 ? std::string("black") : std::string("grey");
+                         });
 
 // ---------------------------------------------------------------------------------------------
 // Sliver and degenerate triangles. A zero-area face is refused with its JSON pointer; needle

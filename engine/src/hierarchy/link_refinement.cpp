@@ -155,6 +155,15 @@ private:
             weighted += x.weight * g;
             weights += x.weight;
         }
+        // Quadrature points lie symmetrically about the centre: under a coaxial source they all
+        // see the same kernel, and their spread alone would call a strongly varying one flat.
+        if (!visibility && !s.cluster && !r.cluster) {
+            const double g =
+                std::max(0.0, front_point_to_polygon_factor(polygon_centroid(r.polygon), r.normal,
+                                                            s.polygon, s.normal));
+            lo = std::min(lo, g);
+            hi = std::max(hi, g);
+        }
         out.factor = weights > 0 ? weighted / weights : 0;
         out.spread = hi - lo;
         for (double& f : out.sample_factor) f = weights > 0 ? f / weights : 0;
