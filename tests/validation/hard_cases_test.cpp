@@ -201,8 +201,9 @@ TEST_P(TinyEmitterEnergyBalance, AbsorbedEqualsEmitted) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Walls, TinyEmitterEnergyBalance, ::testing::Values(0.0, 0.7),
-                         [](const ::testing::TestParamInfo<double>& info) {
-                             return info.param == 0 ? std::string("black") : std::string("grey");
+                         [](const ::testing::TestParamInfo<double>& param_info) {
+                             return param_info.param == 0 ? std::string("black")
+                                                          : std::string("grey");
                          });
 
 // ---------------------------------------------------------------------------------------------
