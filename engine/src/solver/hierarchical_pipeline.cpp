@@ -25,6 +25,9 @@ constexpr double kMinEdgeFactor = 0.25;
 constexpr double kLinkPowerFraction = 2.5e-4;
 // A node may add this fraction of tolerance × the mean irradiance to a sensor unopened.
 constexpr double kGatherIrradianceFraction = 0.02;
+// Share of the tolerance the linked system is solved to (a closed room's energy balance is
+// then within a tenth of the tolerance: the engine core's bar).
+constexpr double kSystemToleranceShare = 0.02;
 // Snapshots' sensor values gather this much coarser than the result's, and only while a gather
 // takes at most this share of the snapshot interval, so that they never slow the sweeps much.
 constexpr double kSnapshotGatherCoarsening = 10;
@@ -138,8 +141,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         return gather_sensors_from_tree(scene, tree, visibility, gather, channels, rays_);
     };
     report("solving", 0.6);
-    // Leave most of the budget to the links.
-    const SolverControl control = solving_control(options_.tolerance / 4);
+    // Sweeps are cheap next to linking: solve the linked system far below the tolerance, leaving
+    // it to the links, and an unconverged iterate's missing light (absorbed < emitted) with it.
+    const SolverControl control = solving_control(kSystemToleranceShare * options_.tolerance);
     std::function<void()> publish;
     bool preview_sensors = !scene.sensors.empty();
     if (observer_) {
