@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "picture/false_colour.h"
+#include "radiant/box.h"
 #include "radiant/mesh_ray_caster.h"
 
 namespace radiant::cli {
@@ -24,15 +25,9 @@ const Vec3& corner(const SolvedMesh& mesh, int triangle, int k) {
 }  // namespace
 
 Camera default_camera(const SolvedMesh& mesh) {
-    Vec3 lo{0, 0, 0}, hi{1, 1, 1};
-    if (!mesh.vertices.empty()) lo = hi = mesh.vertices.front();
-    for (const Vec3& p : mesh.vertices) {
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], p[a]);
-            hi[a] = std::max(hi[a], p[a]);
-        }
-    }
-    const Vec3 size = hi - lo;
+    Box box = bounding_box(mesh.vertices);
+    if (box.empty()) box = {{0, 0, 0}, {1, 1, 1}};
+    const Vec3 lo = box.lo, size = box.size();
     Camera camera;
     camera.eye = lo + Vec3{0.08 * size.x, 0.08 * size.y, 0.6 * size.z};
     camera.target = lo + Vec3{0.75 * size.x, 0.75 * size.y, 0.25 * size.z};

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "photometry/intensity_table.h"
+#include "radiant/box.h"
 #include "radiant/scene.h"
 
 namespace radiant {
@@ -83,18 +84,15 @@ public:
 
     /// Area, planarity and size checks of one planar polygon (a surface or a mesh face).
     void planar_polygon(const std::vector<Vec3>& v, const std::string& pointer, const char* what) {
-        Vec3 lo = v[0], hi = v[0], newell{}, centroid{};
+        const Box box = bounding_box(v);
+        Vec3 newell{}, centroid{};
         for (std::size_t k = 0; k < v.size(); ++k) {
-            for (int c = 0; c < 3; ++c) {
-                lo[c] = std::min(lo[c], v[k][c]);
-                hi[c] = std::max(hi[c], v[k][c]);
-            }
             newell += cross(v[k], v[(k + 1) % v.size()]);
             centroid += v[k];
         }
         centroid = centroid / static_cast<double>(v.size());
         // The bounding-box diagonal stands in for the diameter: O(n), and within √3 of it.
-        const double size = length(hi - lo);
+        const double size = length(box.size());
         const double area = 0.5 * length(newell);
         if (!(area > kZeroAreaTolerance * size * size)) {
             report(pointer, std::string(what) + " has zero area");

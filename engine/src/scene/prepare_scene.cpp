@@ -1,3 +1,4 @@
+#include "radiant/box.h"
 #include "scene/prepared_scene.h"
 
 #include <algorithm>
@@ -131,20 +132,11 @@ PreparedScene prepare_scene(const Scene& scene) {
 
     const std::vector<RawPolygon> raw = raw_polygons(scene, material_of);
 
-    Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-            std::numeric_limits<double>::max()};
-    Vec3 hi = -lo;
-    for (const RawPolygon& p : raw) {
-        for (const Vec3& v : p.vertices) {
-            for (int a = 0; a < 3; ++a) {
-                lo[a] = std::min(lo[a], v[a]);
-                hi[a] = std::max(hi[a], v[a]);
-            }
-        }
-    }
-    if (raw.empty()) lo = hi = Vec3{};
-    out.world_origin = (lo + hi) * 0.5;
-    out.diagonal_m = length(hi - lo);
+    Box box;
+    for (const RawPolygon& p : raw) box.add(p.vertices);
+    if (box.empty()) box = {Vec3{}, Vec3{}};
+    out.world_origin = box.centre();
+    out.diagonal_m = length(box.size());
 
     // Pieces in the local frame. Polygons that are not convex or not planar to 1e-9 of the scene
     // become triangles, each planar by construction.

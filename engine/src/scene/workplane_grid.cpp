@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "formfactor/quadrature.h"
+#include "radiant/box.h"
 #include "radiant/scene.h"
 
 namespace radiant {
@@ -131,15 +132,9 @@ std::vector<Solid> furniture(const Scene& scene, double tolerance) {
         if (!std::holds_alternative<MeshGeometry>(s.geometry)) continue;
         const auto faces = faces_of(s);
         if (!outline(faces, tolerance).empty() || !(signed_volume(faces) > 0)) continue;
-        Solid solid{faces, faces[0][0], faces[0][0]};
-        for (const auto& f : faces) {
-            for (const Vec3& c : f) {
-                for (int a = 0; a < 3; ++a) {
-                    solid.lo[a] = std::min(solid.lo[a], c[a]);
-                    solid.hi[a] = std::max(solid.hi[a], c[a]);
-                }
-            }
-        }
+        Box box;
+        for (const auto& f : faces) box.add(f);
+        Solid solid{faces, box.lo, box.hi};
         out.push_back(std::move(solid));
     }
     return out;

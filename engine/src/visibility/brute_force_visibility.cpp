@@ -30,7 +30,7 @@ std::optional<double> segment_triangle_t(const Triangle& tri, const Vec3& origin
 }
 
 class BruteForceVisibility final : public Visibility {
-  public:
+public:
     explicit BruteForceVisibility(std::span<const Triangle> triangles)
         : Visibility(ray_epsilon(triangles)) {
         for (std::size_t i = 0; i < triangles.size(); ++i) {
@@ -66,7 +66,7 @@ class BruteForceVisibility final : public Visibility {
         return best < 0 ? RayHit{} : RayHit{best, best_t};
     }
 
-  private:
+private:
     std::vector<Triangle> triangles_;  // non-degenerate input triangles
     std::vector<int> index_;           // triangles_[k] is input triangle index_[k]
 };

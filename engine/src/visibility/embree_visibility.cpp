@@ -47,7 +47,7 @@ const char* error_name(RTCError code) {
 /// on arbitrary TBB workers whose other (double) arithmetic must keep IEEE denormals.
 /// Costs one stmxcsr when the bits are already set, else two ldmxcsr (a few ns per query).
 class FlushDenormalsGuard {
-  public:
+public:
     FlushDenormalsGuard() : saved_(_mm_getcsr()) {
         constexpr unsigned kBits = _MM_FLUSH_ZERO_ON | _MM_DENORMALS_ZERO_ON;
         if ((saved_ & kBits) != kBits) {
@@ -61,7 +61,7 @@ class FlushDenormalsGuard {
     FlushDenormalsGuard(const FlushDenormalsGuard&) = delete;
     FlushDenormalsGuard& operator=(const FlushDenormalsGuard&) = delete;
 
-  private:
+private:
     unsigned saved_;
     bool changed_ = false;
 };
@@ -76,7 +76,7 @@ using DevicePtr = std::unique_ptr<RTCDeviceTy, DeviceDeleter>;
 using ScenePtr = std::unique_ptr<RTCSceneTy, SceneDeleter>;
 
 class EmbreeVisibility final : public Visibility {
-  public:
+public:
     explicit EmbreeVisibility(std::span<const Triangle> triangles);
 
     bool visible(const Vec3& from, const Vec3& to) const override;
@@ -84,7 +84,7 @@ class EmbreeVisibility final : public Visibility {
                        std::span<std::uint8_t> out) const override;
     RayHit intersect(const Vec3& origin, const Vec3& direction, double t_max) const override;
 
-  private:
+private:
     static void on_error(void* self, RTCError code, const char* message);
     void throw_if_error(const char* what) const;
     [[noreturn]] void fail(const char* what) const;
@@ -273,8 +273,7 @@ void EmbreeVisibility::visible_batch(std::span<const SegmentQuery> queries,
 }
 
 /// Thread-safe: rtcIntersect1 on a committed scene may run concurrently (Embree manual).
-RayHit EmbreeVisibility::intersect(const Vec3& origin, const Vec3& direction,
-                                   double t_max) const {
+RayHit EmbreeVisibility::intersect(const Vec3& origin, const Vec3& direction, double t_max) const {
     if (!is_finite(origin) || !is_finite(direction) || !(t_max > 0.0)) return {};
     const FlushDenormalsGuard ftz;
     RTCIntersectContext context;

@@ -4,21 +4,14 @@
 #include <limits>
 #include <vector>
 
+#include "radiant/box.h"
 #include "visibility/visibility.h"
 
 namespace radiant {
 namespace {
 
 Vec3 bounding_box_centre(const std::vector<Vec3>& points) {
-    if (points.empty()) return {};
-    Vec3 lo = points.front(), hi = points.front();
-    for (const Vec3& p : points) {
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], p[a]);
-            hi[a] = std::max(hi[a], p[a]);
-        }
-    }
-    return 0.5 * (lo + hi);
+    return points.empty() ? Vec3{} : bounding_box(points).centre();
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "visibility/occlusion_culling.h"
+#include "radiant/box.h"
 
 #include <algorithm>
 
@@ -10,15 +11,6 @@ namespace {
 // Beyond this many occluders a point query casts rays rather than testing each one.
 constexpr std::size_t kMaxPointTests = 256;
 
-void extend(Vec3& lo, Vec3& hi, std::span<const Vec3> points) {
-    for (const Vec3& v : points) {
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], v[a]);
-            hi[a] = std::max(hi[a], v[a]);
-        }
-    }
-}
-
 }  // namespace
 
 namespace {
@@ -28,9 +20,11 @@ namespace {
 // in that closed half-space cannot cross it, so it never blocks anything.
 std::vector<int> potential_occluders(const PreparedScene& scene, double eps) {
     std::vector<Vec3> points;
-    for (const Piece& p : scene.pieces) points.insert(points.end(), p.vertices.begin(), p.vertices.end());
+    for (const Piece& p : scene.pieces)
+        points.insert(points.end(), p.vertices.begin(), p.vertices.end());
     for (const PreparedLuminaire& l : scene.luminaires) points.push_back(l.position);
-    for (const PreparedSensorSet& s : scene.sensors) points.insert(points.end(), s.points.begin(), s.points.end());
+    for (const PreparedSensorSet& s : scene.sensors)
+        points.insert(points.end(), s.points.begin(), s.points.end());
     const std::size_t k = scene.pieces.size();
     std::vector<char> occludes(k, 0);
     tbb::parallel_for(std::size_t{0}, k, [&](std::size_t q) {
@@ -51,9 +45,8 @@ std::vector<int> potential_occluders(const PreparedScene& scene, double eps) {
 OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_tests)
     : scene_(scene), eps_(1e-7 * scene.diagonal_m) {
     const std::size_t k = scene.pieces.size();
-    lo_.assign(k, Vec3{1e300, 1e300, 1e300});
-    hi_.assign(k, Vec3{-1e300, -1e300, -1e300});
-    for (std::size_t i = 0; i < k; ++i) extend(lo_[i], hi_[i], scene.pieces[i].vertices);
+    boxes_.reserve(k);
+    for (const Piece& p : scene.pieces) boxes_.push_back(bounding_box(p.vertices));
     occluders_ = potential_occluders(scene, eps_);
     enabled_ = !occluders_.empty() && k * k <= max_tests / occluders_.size();
     if (!enabled_) return;
@@ -63,12 +56,12 @@ OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_t
         for (std::size_t b = 0; b < k; ++b) {
             if (a == b) continue;
             const Piece& pb = scene.pieces[b];
-            Vec3 lo = lo_[a], hi = hi_[a];
-            extend(lo, hi, pb.vertices);
+            Box shaft = boxes_[a];
+            shaft.add(pb.vertices);
             auto& list = pair_candidates_[a * k + b];
             for (const int q : occluders_) {
                 if (q == static_cast<int>(a) || q == static_cast<int>(b)) continue;
-                if (can_block(q, lo, hi, pa.vertices[0], pa.normal, pb.vertices[0], pb.normal)) {
+                if (can_block(q, shaft, pa.vertices[0], pa.normal, pb.vertices[0], pb.normal)) {
                     list.push_back(q);
                 }
             }
@@ -79,20 +72,21 @@ OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_t
 // q cannot block when it is entirely behind (or on) either end's plane, or when it lies outside
 // (or on) one face of the shaft's bounding box. A flat q inside the box does block: only the
 // box's faces, not a zero-volume overlap, decide.
-bool OcclusionCulling::can_block(int q, const Vec3& lo, const Vec3& hi, const Vec3& pa,
-                                 const Vec3& na, const Vec3& pb, const Vec3& nb) const {
+bool OcclusionCulling::can_block(int q, const Box& shaft, const Vec3& pa, const Vec3& na,
+                                 const Vec3& pb, const Vec3& nb) const {
+    const Box& box = boxes_[static_cast<std::size_t>(q)];
     for (int a = 0; a < 3; ++a) {
-        if (hi_[q][a] <= lo[a] + eps_ || lo_[q][a] >= hi[a] - eps_) return false;
+        if (box.hi[a] <= shaft.lo[a] + eps_ || box.lo[a] >= shaft.hi[a] - eps_) return false;
     }
     const auto& v = scene_.pieces[static_cast<std::size_t>(q)].vertices;
     // A zero normal (a point luminaire) restricts nothing on that end.
     const bool behind_a = na != Vec3{} && std::all_of(v.begin(), v.end(), [&](const Vec3& p) {
-        return dot(p - pa, na) <= eps_;
-    });
+                              return dot(p - pa, na) <= eps_;
+                          });
     if (behind_a) return false;
     const bool behind_b = nb != Vec3{} && std::all_of(v.begin(), v.end(), [&](const Vec3& p) {
-        return dot(p - pb, nb) <= eps_;
-    });
+                              return dot(p - pb, nb) <= eps_;
+                          });
     return !behind_b;
 }
 
@@ -107,12 +101,11 @@ bool OcclusionCulling::maybe_blocked(int piece_a, std::span<const Vec3> a, const
     if (!enabled_) return !occluders_.empty();
     const auto& list = candidates(piece_a, piece_b);
     if (list.empty()) return false;
-    Vec3 lo = a[0], hi = a[0];
-    extend(lo, hi, a);
-    extend(lo, hi, b);
+    Box shaft = bounding_box(a);
+    shaft.add(b);
     for (const int q : list) {
         if (q == piece_a || q == piece_b) continue;
-        if (can_block(q, lo, hi, a[0], na, b[0], nb)) return true;
+        if (can_block(q, shaft, a[0], na, b[0], nb)) return true;
     }
     return false;
 }
@@ -120,11 +113,11 @@ bool OcclusionCulling::maybe_blocked(int piece_a, std::span<const Vec3> a, const
 bool OcclusionCulling::maybe_blocked_from_point(const Vec3& x, const Vec3& n, int piece_b,
                                                 std::span<const Vec3> b, const Vec3& nb) const {
     if (occluders_.size() > kMaxPointTests) return true;
-    Vec3 lo = x, hi = x;
-    extend(lo, hi, b);
+    Box shaft = bounding_box(b);
+    shaft.add(x);
     for (const int q : occluders_) {
         if (q == piece_b) continue;
-        if (can_block(q, lo, hi, x, n, b[0], nb)) return true;
+        if (can_block(q, shaft, x, n, b[0], nb)) return true;
     }
     return false;
 }

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "radiant/box.h"
 #include "scene/prepared_scene.h"
 
 namespace radiant {
@@ -29,14 +30,14 @@ public:
                                   std::span<const Vec3> b, const Vec3& nb) const;
 
 private:
-    bool can_block(int q, const Vec3& lo, const Vec3& hi, const Vec3& pa, const Vec3& na,
-                   const Vec3& pb, const Vec3& nb) const;
+    bool can_block(int q, const Box& shaft, const Vec3& pa, const Vec3& na, const Vec3& pb,
+                   const Vec3& nb) const;
     const std::vector<int>& candidates(int a, int b) const;
 
     const PreparedScene& scene_;
     double eps_;
     bool enabled_;
-    std::vector<Vec3> lo_, hi_;
+    std::vector<Box> boxes_;                         // of each piece
     std::vector<std::vector<int>> pair_candidates_;  // [a * k + b]
     std::vector<int> occluders_;
 };

@@ -1,6 +1,7 @@
 // Shared parts of the visibility interface: the scale-aware ray epsilon, the degeneracy rule
 // both implementations apply, and the default (per-query) batch.
 #include "visibility/visibility.h"
+#include "radiant/box.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,25 +26,18 @@ double ray_epsilon(std::span<const Triangle> triangles) {
     // Floor that keeps ε a normal, positive number when all vertices sit at the origin.
     constexpr double kMinEpsilon = 1e-9;
 
-    Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-            std::numeric_limits<double>::max()};
-    Vec3 hi = -lo;
+    Box box;
     double max_abs = 0.0;
-    bool any = false;
     for (const Triangle& t : triangles) {
         for (const Vec3* v : {&t.a, &t.b, &t.c}) {
             if (!is_finite(*v)) continue;
-            any = true;
-            for (int i = 0; i < 3; ++i) {
-                lo[i] = std::min(lo[i], (*v)[i]);
-                hi[i] = std::max(hi[i], (*v)[i]);
-                max_abs = std::max(max_abs, std::abs((*v)[i]));
-            }
+            box.add(*v);
+            for (int i = 0; i < 3; ++i) max_abs = std::max(max_abs, std::abs((*v)[i]));
         }
     }
-    if (!any) return kEmptySceneEpsilon;
+    if (box.empty()) return kEmptySceneEpsilon;
 
-    const double diagonal = length(hi - lo);
+    const double diagonal = length(box.size());
     // Embree works in float: the spacing of floats at the largest coordinate bounds how far a
     // rounded ray origin or vertex can move, so stay 32 spacings clear of it.
     const float m = static_cast<float>(max_abs);
