@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <numbers>
 
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
@@ -11,6 +12,7 @@
 #include "formfactor/quadrature.h"
 #include "formfactor/shadow_rays.h"
 #include "geometry/random.h"
+#include "solution/surface_summary.h"
 
 namespace radiant {
 namespace {
@@ -52,11 +54,25 @@ public:
         const Element& r = tree_[static_cast<std::size_t>(p.receiver)];
         const Element& s = tree_[static_cast<std::size_t>(p.source)];
         if (!may_exchange(r, s)) return {};
+        // Clusters only send (see choose_split). A cluster linked as a receiver would hand the
+        // irradiance of its few sample points to every part of it alike: the floor under an
+        // emitter would get what its sample points on the rest of the floor see, and a
+        // surface facing away what its neighbour facing the source gets.
+        if (r.cluster) return {Decision::split_receiver, {}};
         const double power_per_factor = r.area_m2 * s.radiosity_max;
         const double limit = criteria_.power_epsilon_lm;
         const bool split_r = tree_.can_subdivide(p.receiver);
         const bool split_s = tree_.can_subdivide(p.source);
         const Decision split = choose_split(r, s, split_r, split_s);
+
+        // A cluster's sample points stand for its mean radiosity; a bright part of it (an
+        // emitter among dark surfaces) may lie where no sample point does. Its light above the
+        // mean is bounded by the factor of the whole cluster seen from the nearest point.
+        if (s.cluster && split != Decision::link) {
+            const double above_mean =
+                s.radiosity_max - photometric(s.radiosity, criteria_.channels);
+            if (r.area_m2 * above_mean * factor_bound(r, s) > limit) return {split, {}};
+        }
 
         // Decide from the unoccluded kernel first: most splits need no shadow ray at all.
         const KernelSamples open = kernel(r, s, p, false, rays);
@@ -83,6 +99,23 @@ public:
     }
 
 private:
+    static double box_distance(const Element& r, const Element& s) {
+        double d2 = 0;
+        for (int a = 0; a < 3; ++a) {
+            const double d = std::max({s.lo[a] - r.hi[a], 0.0, r.lo[a] - s.hi[a]});
+            d2 += d * d;
+        }
+        return std::sqrt(d2);
+    }
+
+    // Upper bound of the factor from any point of r to all of s: A_s / (π d²), d the distance
+    // between their boxes (cosines ≤ 1), and never above 1.
+    static double factor_bound(const Element& r, const Element& s) {
+        const double d = box_distance(r, s), d2 = d * d;
+        const double area_over = s.area_m2 / std::numbers::pi;
+        return area_over < d2 ? area_over / d2 : 1.0;
+    }
+
     // Light passes only between elements that lie (partly) in front of each other.
     bool may_exchange(const Element& r, const Element& s) const {
         if (!r.cluster && !s.cluster) {
