@@ -8,6 +8,7 @@
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
+#include "formfactor/area_average.h"
 #include "formfactor/point_polygon.h"
 #include "formfactor/quadrature.h"
 #include "formfactor/shadow_rays.h"
@@ -22,6 +23,10 @@ struct Pair {
     int source;
 };
 
+// A source nearer to a receiver than this fraction of the receiver's diameter is
+// near-singular for the receiver's quadrature points (see Oracle::surface_factor).
+constexpr double kNearSingular = 0.25;
+
 enum class Decision { drop, link, split_receiver, split_source };
 
 // Where a link's light comes from: the source itself, or for a cluster, the root patches its
@@ -30,6 +35,7 @@ enum class Decision { drop, link, split_receiver, split_source };
 struct SourcePart {
     int element;
     double factor;
+    bool exact = false;
 };
 
 struct Verdict {
@@ -88,17 +94,40 @@ public:
         if (error > limit && split != Decision::link) return {split, {}};
         Verdict v{Decision::link, {}};
         if (!s.cluster) {
-            v.parts.push_back({p.source, seen.factor});
+            bool exact = false;
+            const double factor = surface_factor(r, s, open, seen, limit, exact);
+            v.parts.push_back({p.source, factor, exact});
         } else {
             for (std::size_t m = 0; m < s.samples.size(); ++m) {
                 if (seen.sample_factor[m] > 0)
-                    v.parts.push_back({s.samples[m].root, seen.sample_factor[m]});
+                    v.parts.push_back({s.samples[m].root, seen.sample_factor[m], false});
             }
         }
         return v;
     }
 
 private:
+    // The link's factor between two surface elements: the mean of the kernel over the
+    // receiver's points, with their visibility. Where the source is near-singular for the
+    // receiver — nearer than its points are to each other, but not touching (adjacent
+    // elements refine along their common edge instead) — those points miss the strip along the
+    // source's edges in which the factor falls from about 1 to about 0, so the unoccluded mean
+    // comes from adaptive cubature, scaled by the visible fraction the points saw.
+    // The cubature stops when its error would move no more light than the link may carry
+    // uncertain (`limit`), so dim pairs cost little.
+    static double surface_factor(const Element& r, const Element& s, const KernelSamples& open,
+                                 const KernelSamples& seen, double limit, bool& exact) {
+        const double gap = box_distance(r, s);
+        if (!(gap > 1e-9 * (r.diameter_m + s.diameter_m)) || gap >= kNearSingular * r.diameter_m ||
+            !(s.radiosity_max > 0)) {
+            return seen.factor;
+        }
+        exact = true;
+        const double mean = area_averaged_factor(r.polygon, r.normal, s.polygon, s.normal, 1e-3,
+                                                 limit / s.radiosity_max);
+        return open.factor > 0 ? mean * std::min(seen.factor / open.factor, 1.0) : mean;
+    }
+
     static double box_distance(const Element& r, const Element& s) {
         double d2 = 0;
         for (int a = 0; a < 3; ++a) {
@@ -231,7 +260,8 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
     std::vector<Pair> pending{{tree.top(), tree.top()}};
     auto add_links = [&out](const Pair& p, const Verdict& v) {
         for (const SourcePart& part : v.parts) {
-            out.links.push_back({p.receiver, part.element, static_cast<float>(part.factor)});
+            out.links.push_back(
+                {p.receiver, part.element, static_cast<float>(part.factor), part.exact});
         }
     };
     while (!pending.empty()) {

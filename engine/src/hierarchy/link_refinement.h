@@ -20,6 +20,10 @@ struct Link {
     int receiver;
     int source;
     float factor;
+    /// The factor is the receiver's exact area average (near-singular source, see the oracle),
+    /// not a mean over its quadrature points: completing a closed receiver's factor sum to 1
+    /// leaves it as it is.
+    bool exact = false;
 };
 
 struct RefinementCriteria {
