@@ -62,7 +62,7 @@ double area_averaged_factor(std::span<const Vec3> receiver, const Vec3& receiver
         double radius = 0;
         for (const Vec3& v : polygon) radius = std::max(radius, length(v - c));
         const double g = std::abs(dot(c - source_point, source_normal));
-        if (radius < 0.25 * g) return 0.0;
+        if (radius < g) return 0.0;
         double edge = 1e300;
         for (std::size_t i = 0; i < source.size(); ++i) {
             edge = std::min(edge, segment_distance(c, source[i], source[(i + 1) % source.size()]));

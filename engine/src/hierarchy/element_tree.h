@@ -44,9 +44,7 @@ struct Element {
     Rgb luminaire_irradiance{0, 0, 0};  ///< direct from point luminaires, area average
     Rgb radiosity{0, 0, 0};             ///< current solution; interior nodes: area average
     Rgb gathered{0, 0, 0};              ///< irradiance through this element's own links
-    Rgb gathered_exact{0, 0, 0};        ///< the part of it through exact links (Link::exact)
     double link_factor_sum = 0;         ///< Σ K over this element's own links
-    double exact_factor_sum = 0;        ///< the part of it over exact links
     double radiosity_max = 0;           ///< largest photometric radiosity of any leaf below
     bool leaf() const { return children.empty(); }
 };

@@ -19,13 +19,9 @@ HierarchicalSystem::HierarchicalSystem(ElementTree& tree, const std::vector<Link
     for (const Link& l : links) ++first_link_[static_cast<std::size_t>(l.receiver) + 1];
     for (std::size_t e = 0; e < tree.size(); ++e) first_link_[e + 1] += first_link_[e];
     for (std::size_t e = 0; e < tree.size(); ++e) {
-        double sum = 0, exact = 0;
-        for (std::size_t k = first_link_[e]; k < first_link_[e + 1]; ++k) {
-            sum += links[k].factor;
-            if (links[k].exact) exact += links[k].factor;
-        }
+        double sum = 0;
+        for (std::size_t k = first_link_[e]; k < first_link_[e + 1]; ++k) sum += links[k].factor;
         tree[e].link_factor_sum = sum;
-        tree[e].exact_factor_sum = exact;
     }
     // ‖operator‖∞: a leaf's new radiosity is ρ times a weighted sum of radiosities with weights
     // summing to S (its own and its ancestors' link factors), or to 1 where S is completed.
@@ -46,36 +42,26 @@ HierarchicalSystem::HierarchicalSystem(ElementTree& tree, const std::vector<Link
 
 void HierarchicalSystem::gather() {
     tbb::parallel_for(std::size_t{0}, tree_.size(), [&](std::size_t e) {
-        Rgb g{0, 0, 0}, exact{0, 0, 0};
+        Rgb g{0, 0, 0};
         for (std::size_t k = first_link_[e]; k < first_link_[e + 1]; ++k) {
             const Link& l = links_[k];
             const Rgb& b = tree_[static_cast<std::size_t>(l.source)].radiosity;
             for (int c = 0; c < channels_; ++c) g[c] += l.factor * b[c];
-            if (l.exact) {
-                for (int c = 0; c < channels_; ++c) exact[c] += l.factor * b[c];
-            }
         }
         tree_[e].gathered = g;
-        tree_[e].gathered_exact = exact;
     });
 }
 
-void HierarchicalSystem::push(int index, const Down& down, Residual& residual) {
+void HierarchicalSystem::push(int index, const Rgb& down, double factor_sum, Residual& residual) {
     Element& e = tree_[static_cast<std::size_t>(index)];
-    Down here = down;
-    for (int c = 0; c < 3; ++c) {
-        here.irradiance[c] += e.gathered[c];
-        here.exact_irradiance[c] += e.gathered_exact[c];
-    }
-    here.factor_sum += e.link_factor_sum;
-    here.exact_factor_sum += e.exact_factor_sum;
-    const Rgb& h = here.irradiance;
-    const double s = here.factor_sum;
+    Rgb h = down;
+    for (int c = 0; c < 3; ++c) h[c] += e.gathered[c];
+    const double s = factor_sum + e.link_factor_sum;
     if (!e.leaf()) {
         Rgb sum{0, 0, 0};
         double area = 0;
         for (const int child : e.children) {
-            push(child, here, residual);
+            push(child, h, s, residual);
             const Element& c = tree_[static_cast<std::size_t>(child)];
             for (int k = 0; k < 3; ++k) sum[k] += c.area_m2 * c.radiosity[k];
             area += c.area_m2;
@@ -84,18 +70,11 @@ void HierarchicalSystem::push(int index, const Down& down, Residual& residual) {
         for (int k = 0; k < 3; ++k) self.radiosity[k] = area > 0 ? sum[k] / area : 0;
         return;
     }
-    // A closed receiver's factors sum to 1: the deficit of the sum is laid on the links that
-    // estimate their factor from the receiver's points (sampled visibility), in proportion;
-    // exact links keep theirs. No estimated link: nothing to complete.
     const bool enclosed = enclosed_patch_[static_cast<std::size_t>(e.patch)] != 0;
-    const double estimated = s - here.exact_factor_sum;
-    const double scale = enclosed && estimated > 1e-12 * s
-                             ? std::max(1 - here.exact_factor_sum, 0.0) / estimated
-                             : 1;
+    const double scale = enclosed && s > 0 ? 1 / s : 1;
     Rgb& irradiance = irradiance_[static_cast<std::size_t>(index)];
     for (int c = 0; c < channels_; ++c) {
-        irradiance[c] = here.exact_irradiance[c] + (h[c] - here.exact_irradiance[c]) * scale +
-                        e.luminaire_irradiance[c];
+        irradiance[c] = h[c] * scale + e.luminaire_irradiance[c];
         const double b = e.exitance[c] + e.reflectance[c] * irradiance[c];
         const double change = std::abs(b - e.radiosity[c]);
         residual.inf[c] = std::max(residual.inf[c], change);
@@ -158,7 +137,7 @@ HierarchicalOutcome HierarchicalSystem::solve(const SolverControl& control,
     while (out.iterations < kMaxSweeps) {
         gather();
         Residual r;
-        push(tree_.top(), Down{}, r);
+        push(tree_.top(), Rgb{0, 0, 0}, 0, r);
         ++out.iterations;
         double worst = 0;
         for (int c = 0; c < channels_; ++c) {

@@ -39,13 +39,7 @@ private:
     };
     void extrapolate(const Residual& now, const Residual& before);
     void gather();
-    // What a node's ancestors pass down: their irradiance and factor sums, and the parts of
-    // both through exact links.
-    struct Down {
-        Rgb irradiance{0, 0, 0}, exact_irradiance{0, 0, 0};
-        double factor_sum = 0, exact_factor_sum = 0;
-    };
-    void push(int e, const Down& down, Residual& residual);
+    void push(int e, const Rgb& down, double factor_sum, Residual& residual);
 
     ElementTree& tree_;
     const std::vector<Link>& links_;

@@ -35,7 +35,6 @@ enum class Decision { drop, link, split_receiver, split_source };
 struct SourcePart {
     int element;
     double factor;
-    bool exact = false;
 };
 
 struct Verdict {
@@ -94,13 +93,11 @@ public:
         if (error > limit && split != Decision::link) return {split, {}};
         Verdict v{Decision::link, {}};
         if (!s.cluster) {
-            bool exact = false;
-            const double factor = surface_factor(r, s, open, seen, limit, exact);
-            v.parts.push_back({p.source, factor, exact});
+            v.parts.push_back({p.source, surface_factor(r, s, open, seen, limit)});
         } else {
             for (std::size_t m = 0; m < s.samples.size(); ++m) {
                 if (seen.sample_factor[m] > 0)
-                    v.parts.push_back({s.samples[m].root, seen.sample_factor[m], false});
+                    v.parts.push_back({s.samples[m].root, seen.sample_factor[m]});
             }
         }
         return v;
@@ -112,20 +109,27 @@ private:
     // receiver — nearer than its points are to each other, but not touching (adjacent
     // elements refine along their common edge instead) — those points miss the strip along the
     // source's edges in which the factor falls from about 1 to about 0, so the unoccluded mean
-    // comes from adaptive cubature, scaled by the visible fraction the points saw.
-    // The cubature stops when its error would move no more light than the link may carry
-    // uncertain (`limit`), so dim pairs cost little.
-    static double surface_factor(const Element& r, const Element& s, const KernelSamples& open,
-                                 const KernelSamples& seen, double limit, bool& exact) {
+    // comes from adaptive cubature, scaled by the visible fraction the points saw — except for
+    // closed receivers, whose factor sums the solver completes (see closed()). The cubature stops
+    // when its error would move no more light than the link may carry uncertain (`limit`), so dim
+    // pairs cost little.
+    double surface_factor(const Element& r, const Element& s, const KernelSamples& open,
+                          const KernelSamples& seen, double limit) const {
         const double gap = box_distance(r, s);
         if (!(gap > 1e-9 * (r.diameter_m + s.diameter_m)) || gap >= kNearSingular * r.diameter_m ||
-            !(s.radiosity_max > 0)) {
+            !(s.radiosity_max > 0) || closed(r)) {
             return seen.factor;
         }
-        exact = true;
         const double mean = area_averaged_factor(r.polygon, r.normal, s.polygon, s.normal, 1e-3,
                                                  limit / s.radiosity_max);
         return open.factor > 0 ? mean * std::min(seen.factor / open.factor, 1.0) : mean;
+    }
+
+    // A receiver in a closed enclosure has its factor sum completed to 1 by the solver, which
+    // is exact only while all its links average the kernel over the same points.
+    bool closed(const Element& r) const {
+        const auto patch = static_cast<std::size_t>(r.patch);
+        return patch < criteria_.enclosed_patch.size() && criteria_.enclosed_patch[patch] != 0;
     }
 
     static double box_distance(const Element& r, const Element& s) {
@@ -260,8 +264,7 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
     std::vector<Pair> pending{{tree.top(), tree.top()}};
     auto add_links = [&out](const Pair& p, const Verdict& v) {
         for (const SourcePart& part : v.parts) {
-            out.links.push_back(
-                {p.receiver, part.element, static_cast<float>(part.factor), part.exact});
+            out.links.push_back({p.receiver, part.element, static_cast<float>(part.factor)});
         }
     };
     while (!pending.empty()) {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "hierarchy/element_tree.h"
@@ -20,10 +21,6 @@ struct Link {
     int receiver;
     int source;
     float factor;
-    /// The factor is the receiver's exact area average (near-singular source, see the oracle),
-    /// not a mean over its quadrature points: completing a closed receiver's factor sum to 1
-    /// leaves it as it is.
-    bool exact = false;
 };
 
 struct RefinementCriteria {
@@ -32,6 +29,9 @@ struct RefinementCriteria {
     std::uint64_t seed = 1;
     double ambient_irradiance = 0;  ///< guess of the reflected light, for new elements' estimates
     int channels = 1;
+    /// Root patches in a closed enclosure (see HierarchicalSystem): their near-singular links
+    /// keep the mean over their points, which the solver's completion of factor sums assumes.
+    std::span<const char> enclosed_patch;
     std::function<bool()> should_stop;  ///< polled between rounds and pairs, from any thread
 };
 

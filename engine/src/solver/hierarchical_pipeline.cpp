@@ -95,6 +95,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     criteria.seed = options_.seed;
     criteria.ambient_irradiance = ambient;
     criteria.channels = channels;
+    criteria.enclosed_patch = enclosed;
     criteria.should_stop = [this] { return should_stop(); };
     RefinementOutcome linked = refine_links(tree, visibility, criteria);
     rays_ += linked.rays;
