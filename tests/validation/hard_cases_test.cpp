@@ -441,6 +441,50 @@ INSTANTIATE_TEST_SUITE_P(Variants, EmitterOneMillimetreAbove,
                                     param_info.param.variant;
                          });
 
+// The scene: the emitter 1 mm above the middle of an open, black 10 × 10 m floor. The
+// floor gets all the light but what escapes the gap sideways and misses it (< 0.2 %), with
+// elements bounded (the mean free path across the gap once made 1.9 million root patches).
+Scene emitter_over_large_floor(const std::string& variant) {
+    const double scale = variant == "mm" ? 1000 : 1;
+    const Vec3 offset = variant == "far" ? Vec3{1e4, 1e4, 0} : Vec3{0, 0, 0};
+    auto at = [&](Vec3 p) { return p * scale + offset; };
+    Scene scene;
+    scene.name = "emitter-1mm-above-large-floor";
+    scene.units = variant == "mm" ? LengthUnit::mm : LengthUnit::m;
+    scene.materials = {testing::gray("emitter", 0.0, kEmitterExitance),
+                       testing::gray("black", 0.0)};
+    scene.surfaces = {
+        testing::polygon_surface("emitter", "emitter",
+                                 {at({4.5, 4.5, kGap}), at({4.5, 5.5, kGap}), at({5.5, 5.5, kGap}),
+                                  at({5.5, 4.5, kGap})}),
+        testing::polygon_surface("floor", "black",
+                                 {at({0, 0, 0}), at({10, 0, 0}), at({10, 10, 0}), at({0, 10, 0})})};
+    return scene;
+}
+
+class EmitterOneMillimetreAboveLargeFloor : public ::testing::TestWithParam<NearCase> {};
+
+TEST_P(EmitterOneMillimetreAboveLargeFloor, FloorGetsTheLight) {
+    const auto [method, variant] = GetParam();
+    const Result r = solve_with(emitter_over_large_floor(variant), method);
+    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+    expect_finite(r);
+    const auto* floor = find_surface(r, "floor");
+    ASSERT_NE(floor, nullptr);
+    EXPECT_NEAR(floor->average_irradiance * 100 / kEmitterExitance, 1.0, 0.01)
+        << "floor " << floor->average_irradiance << " lx; " << describe(r);
+    EXPECT_LT(r.stats.elements, kNearElementLimit) << describe(r);
+}
+
+INSTANTIATE_TEST_SUITE_P(Variants, EmitterOneMillimetreAboveLargeFloor,
+                         ::testing::Values(NearCase{"hierarchical", "m"},
+                                           NearCase{"hierarchical", "mm"},
+                                           NearCase{"hierarchical", "far"}, NearCase{"auto", "m"}),
+                         [](const auto& param_info) {
+                             return std::string(param_info.param.method) + "_" +
+                                    param_info.param.variant;
+                         });
+
 // The 1 × 1 m emitter 1 mm above the floor of a closed 4 × 4 × 3 m room: black everywhere, or
 // with a grey floor (ρ 0.5) that sends half of it back to the emitter and the room.
 Scene emitter_over_floor(double floor_reflectance) {
