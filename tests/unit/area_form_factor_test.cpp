@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analytic_form_factors.h"
+#include "formfactor/area_average.h"
 #include "formfactor/point_polygon.h"
 #include "formfactor/quadrature.h"
 
@@ -175,6 +176,51 @@ TEST(AreaFactor, RoomRowSums) {
     }
     EXPECT_NEAR(area_factor(faces[0], faces[1], 4), 0.282733, 1e-3 * 0.282733);
     EXPECT_NEAR(area_factor(faces[0], faces[2], 4), 0.179317, 1e-3 * 0.179317);
+}
+
+// Near-singular pairs (the receiver far larger than its distance to the source): the
+// adaptive cubature resolves the strip along the source's edges that a fixed rule misses
+// (every fixed-rule point of a 1 m square 1 mm under another sees a factor of ~1, not 0.998).
+TEST(AreaAveragedFactor, NearlyTouchingSquaresAndTheirNeighbours) {
+    const Quad floor = rect({}, {1, 0, 0}, {0, 1, 0});
+    const Vec3 up{0, 0, 1}, down{0, 0, -1};
+    for (const double c : {1.0, 0.1, 0.01, 0.001}) {
+        // Facing down: e1 × e2 = −z.
+        const Quad above = rect({0, 0, c}, {0, 1, 0}, {1, 0, 0});
+        const Quad beside = rect({1, 0, c}, {0, 1, 0}, {1, 0, 0});
+        const Quad corner = rect({1, 1, c}, {0, 1, 0}, {1, 0, 0});
+        const double exact = analytic::parallel_coaxial_rectangles(1, 1, c);
+        EXPECT_NEAR(area_averaged_factor(floor, up, above, down) / exact, 1.0, 1e-3) << "c " << c;
+        EXPECT_NEAR(area_averaged_factor(floor, up, beside, down) /
+                        analytic::parallel_rectangles(0, 1, 0, 1, 1, 2, 0, 1, c),
+                    1.0, 1e-2)
+            << "c " << c;
+        EXPECT_NEAR(area_averaged_factor(floor, up, corner, down) /
+                        analytic::parallel_rectangles(0, 1, 0, 1, 1, 2, 1, 2, c),
+                    1.0, 2e-2)
+            << "c " << c;
+    }
+    EXPECT_NEAR(analytic::parallel_coaxial_rectangles(1, 1, 0.001), 0.998006, 1e-6);
+}
+
+// Scale-free: the same pair in millimetres and 10 km from the origin gives the same factor (to
+// well within the cubature's own 1e-3: rounding may reorder pieces of equal error).
+TEST(AreaAveragedFactor, SameAtEveryScale) {
+    auto at = [](const Quad& q, double s, Vec3 o) {
+        return Quad{q[0] * s + o, q[1] * s + o, q[2] * s + o, q[3] * s + o};
+    };
+    const Quad floor = rect({}, {1, 0, 0}, {0, 1, 0});
+    const Quad above = rect({0.3, 0.2, 0.001}, {0, 1, 0}, {1, 0, 0});
+    const Vec3 up{0, 0, 1}, down{0, 0, -1};
+    const double base = area_averaged_factor(floor, up, above, down);
+    EXPECT_NEAR(area_averaged_factor(at(floor, 1e-3, {}), up, at(above, 1e-3, {}), down) / base,
+                1.0, 1e-4);
+    EXPECT_NEAR(
+        area_averaged_factor(at(floor, 1, {1e4, 1e4, 0}), up, at(above, 1, {1e4, 1e4, 0}), down) /
+            base,
+        1.0, 1e-6);
+    EXPECT_NEAR(base / analytic::parallel_rectangles(0, 1, 0, 1, 0.3, 1.3, 0.2, 1.2, 0.001), 1.0,
+                1e-3);
 }
 
 }  // namespace

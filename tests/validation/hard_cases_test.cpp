@@ -380,5 +380,176 @@ TEST(CoplanarOverlays, EmitterInCeilingAndRugOnFloorMatchCutSurfaces) {
     }
 }
 
+// ---------------------------------------------------------------------------------------------
+// An emitter 1 mm above a receiver: a 1 × 1 m emitter (M = 1000 lm/m², facing down) over a
+// black 1 × 1 m receiver. The kernel is near-singular over the whole footprint; the receiver's
+// mean irradiance is M · F12, F12 = 0.998006 (§1.1), the same in millimetres and 10 km from the
+// origin. Over the black floor of a closed black room all the light is absorbed, nearly all of
+// it by the floor (what leaves the gap lands within a few mm of the footprint). Both with a
+// bounded number of elements: the gap must not shrink the mesh of the whole scene to 1 mm.
+
+constexpr double kGap = 0.001;
+constexpr double kEmitterExitance = 1000;
+// Elements a few 1 m² surfaces may take, with room to spare (the bug took 1.9 million).
+constexpr std::size_t kNearElementLimit = 20000;
+
+struct NearCase {
+    const char* method;
+    const char* variant;  // "m", "mm" or "far"
+};
+
+void PrintTo(const NearCase& c, std::ostream* os) { *os << c.method << ", " << c.variant; }
+
+Result solve_with(const Scene& scene, const char* method, double tolerance = 0.01) {
+    SolveOptions options = options_from(scene.settings);
+    options.method = method;
+    options.tolerance = tolerance;
+    return solve(scene, options);
+}
+
+Scene emitter_over_receiver(const std::string& variant) {
+    const double scale = variant == "mm" ? 1000 : 1;
+    const Vec3 offset = variant == "far" ? Vec3{1e4, 1e4, 0} : Vec3{0, 0, 0};
+    auto at = [&](Vec3 p) { return p * scale + offset; };
+    Scene scene;
+    scene.name = "emitter-1mm-above-receiver";
+    scene.units = variant == "mm" ? LengthUnit::mm : LengthUnit::m;
+    scene.materials = {testing::gray("emitter", 0.0, kEmitterExitance),
+                       testing::gray("black", 0.0)};
+    // Emitter at z = 1 mm facing −z; receiver at z = 0 facing +z; both [0, 1] × [0, 1].
+    scene.surfaces = {
+        testing::polygon_surface(
+            "emitter", "emitter",
+            {at({0, 0, kGap}), at({0, 1, kGap}), at({1, 1, kGap}), at({1, 0, kGap})}),
+        testing::polygon_surface("receiver", "black",
+                                 {at({0, 0, 0}), at({1, 0, 0}), at({1, 1, 0}), at({0, 1, 0})})};
+    return scene;
+}
+
+class EmitterOneMillimetreAbove : public ::testing::TestWithParam<NearCase> {};
+
+TEST_P(EmitterOneMillimetreAbove, ReceiverGetsTheFormFactor) {
+    const auto [method, variant] = GetParam();
+    const Result r = solve_with(emitter_over_receiver(variant), method);
+    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+    expect_finite(r);
+    const auto* receiver = find_surface(r, "receiver");
+    ASSERT_NE(receiver, nullptr);
+    const double f12 = analytic::parallel_coaxial_rectangles(1, 1, kGap);
+    ASSERT_NEAR(f12, 0.998006, 1e-6);
+    EXPECT_NEAR(receiver->average_irradiance / (f12 * kEmitterExitance), 1.0, 0.01)
+        << "irradiance " << receiver->average_irradiance << " lx; " << describe(r);
+    EXPECT_LT(r.stats.elements, kNearElementLimit) << describe(r);
+}
+
+INSTANTIATE_TEST_SUITE_P(Variants, EmitterOneMillimetreAbove,
+                         ::testing::Values(NearCase{"hierarchical", "m"},
+                                           NearCase{"hierarchical", "mm"},
+                                           NearCase{"hierarchical", "far"}, NearCase{"auto", "m"},
+                                           NearCase{"auto", "mm"}, NearCase{"auto", "far"}),
+                         [](const auto& param_info) {
+                             return std::string(param_info.param.method) + "_" +
+                                    param_info.param.variant;
+                         });
+
+// The scene: the emitter 1 mm above the middle of an open, black 10 × 10 m floor. The
+// floor gets all the light but what escapes the gap sideways and misses it (< 0.2 %), with
+// elements bounded (the mean free path across the gap once made 1.9 million root patches).
+Scene emitter_over_large_floor(const std::string& variant) {
+    const double scale = variant == "mm" ? 1000 : 1;
+    const Vec3 offset = variant == "far" ? Vec3{1e4, 1e4, 0} : Vec3{0, 0, 0};
+    auto at = [&](Vec3 p) { return p * scale + offset; };
+    Scene scene;
+    scene.name = "emitter-1mm-above-large-floor";
+    scene.units = variant == "mm" ? LengthUnit::mm : LengthUnit::m;
+    scene.materials = {testing::gray("emitter", 0.0, kEmitterExitance),
+                       testing::gray("black", 0.0)};
+    scene.surfaces = {
+        testing::polygon_surface("emitter", "emitter",
+                                 {at({4.5, 4.5, kGap}), at({4.5, 5.5, kGap}), at({5.5, 5.5, kGap}),
+                                  at({5.5, 4.5, kGap})}),
+        testing::polygon_surface("floor", "black",
+                                 {at({0, 0, 0}), at({10, 0, 0}), at({10, 10, 0}), at({0, 10, 0})})};
+    return scene;
+}
+
+class EmitterOneMillimetreAboveLargeFloor : public ::testing::TestWithParam<NearCase> {};
+
+TEST_P(EmitterOneMillimetreAboveLargeFloor, FloorGetsTheLight) {
+    const auto [method, variant] = GetParam();
+    const Result r = solve_with(emitter_over_large_floor(variant), method);
+    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+    expect_finite(r);
+    const auto* floor = find_surface(r, "floor");
+    ASSERT_NE(floor, nullptr);
+    EXPECT_NEAR(floor->average_irradiance * 100 / kEmitterExitance, 1.0, 0.01)
+        << "floor " << floor->average_irradiance << " lx; " << describe(r);
+    EXPECT_LT(r.stats.elements, kNearElementLimit) << describe(r);
+}
+
+INSTANTIATE_TEST_SUITE_P(Variants, EmitterOneMillimetreAboveLargeFloor,
+                         ::testing::Values(NearCase{"hierarchical", "m"},
+                                           NearCase{"hierarchical", "mm"},
+                                           NearCase{"hierarchical", "far"}, NearCase{"auto", "m"}),
+                         [](const auto& param_info) {
+                             return std::string(param_info.param.method) + "_" +
+                                    param_info.param.variant;
+                         });
+
+// The 1 × 1 m emitter 1 mm above the floor of a closed 4 × 4 × 3 m room: black everywhere, or
+// with a grey floor (ρ 0.5) that sends half of it back to the emitter and the room.
+Scene emitter_over_floor(double floor_reflectance) {
+    Scene scene;
+    scene.name = "emitter-1mm-above-floor";
+    scene.materials = {testing::gray("emitter", 0.0, kEmitterExitance), testing::gray("black", 0.0),
+                       testing::gray("floor", floor_reflectance)};
+    scene.surfaces = testing::room_without_ceiling(4, 4, 3, "black");
+    scene.surfaces[0].material = "floor";
+    scene.surfaces.push_back(
+        testing::polygon_surface("ceiling", "black", testing::ceiling_rect(0, 4, 0, 4, 3)));
+    scene.surfaces.push_back(testing::polygon_surface(
+        "emitter", "emitter", testing::ceiling_rect(1.5, 2.5, 1.5, 2.5, kGap)));
+    return scene;
+}
+
+struct NearFloorCase {
+    const char* method;
+    double floor_reflectance;
+};
+
+void PrintTo(const NearFloorCase& c, std::ostream* os) {
+    *os << c.method << ", floor reflectance " << c.floor_reflectance;
+}
+
+class EmitterOneMillimetreAboveFloor : public ::testing::TestWithParam<NearFloorCase> {};
+
+TEST_P(EmitterOneMillimetreAboveFloor, ClosedRoomAbsorbsWhatItEmits) {
+    const auto [method, rho] = GetParam();
+    const Result r = solve_with(emitter_over_floor(rho), method);
+    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+    expect_finite(r);
+    EXPECT_NEAR(r.stats.emitted_flux_lm, kEmitterExitance, 1e-6);
+    EXPECT_NEAR(absorbed_over_emitted(r), 1.0, 0.01)
+        << "absorbed " << r.stats.absorbed_flux_lm << "; " << describe(r);
+    EXPECT_LT(r.stats.elements, kNearElementLimit) << describe(r);
+    if (rho == 0) {
+        // All but what escapes the gap lands on the floor, and most of that lands beside it.
+        const auto* floor = find_surface(r, "floor");
+        ASSERT_NE(floor, nullptr);
+        EXPECT_NEAR(floor->average_irradiance * 16 / kEmitterExitance, 1.0, 0.01)
+            << "floor " << floor->average_irradiance << " lx; " << describe(r);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Floors, EmitterOneMillimetreAboveFloor,
+                         ::testing::Values(NearFloorCase{"hierarchical", 0.0},
+                                           NearFloorCase{"hierarchical", 0.5},
+                                           NearFloorCase{"auto", 0.0}, NearFloorCase{"auto", 0.5}),
+                         [](const auto& param_info) {
+                             return std::string(param_info.param.method) + "_floor_rho" +
+                                    std::to_string(
+                                        std::lround(param_info.param.floor_reflectance * 10));
+                         });
+
 }  // namespace
 }  // namespace radiant

@@ -12,9 +12,14 @@
 namespace radiant {
 namespace {
 
+// A facing parallel surface nearer than this fraction of either's size is in near contact.
+constexpr double kNearContact = 0.02;
+constexpr double kParallelCosine = 0.99;
+
 // Cosine-distributed direction about unit n from two uniform numbers (Malley's method).
 Vec3 cosine_direction(const Vec3& n, double r1, double r2) {
-    const Vec3 t = normalized(std::abs(n.x) < 0.9 ? cross(n, Vec3{1, 0, 0}) : cross(n, Vec3{0, 1, 0}));
+    const Vec3 t =
+        normalized(std::abs(n.x) < 0.9 ? cross(n, Vec3{1, 0, 0}) : cross(n, Vec3{0, 1, 0}));
     const Vec3 b = cross(n, t);
     const double s = std::sqrt(r1), phi = 2 * std::numbers::pi * r2;
     return t * (s * std::cos(phi)) + b * (s * std::sin(phi)) + n * std::sqrt(1 - r1);
@@ -23,7 +28,7 @@ Vec3 cosine_direction(const Vec3& n, double r1, double r2) {
 }  // namespace
 
 double mean_free_path(const PreparedScene& scene, const Visibility& visibility,
-                      std::uint64_t seed, int rays) {
+                      std::span<const int> triangle_piece, std::uint64_t seed, int rays) {
     if (scene.pieces.empty() || !(scene.total_area_m2 > 0)) return scene.diagonal_m;
     std::vector<double> cdf;
     double total = 0;
@@ -43,10 +48,18 @@ double mean_free_path(const PreparedScene& scene, const Visibility& visibility,
         const Vec3 x = stratified_points(p.vertices, 1, u)[0] + p.normal * eps;
         const Vec3 dir = cosine_direction(p.normal, rng.next(), rng.next());
         const RayHit hit = visibility.intersect(x, dir, reach);
-        if (hit.triangle >= 0) {
-            sum += hit.t;
-            ++hits;
+        if (hit.triangle < 0) continue;
+        const auto tri = static_cast<std::size_t>(hit.triangle);
+        if (tri < triangle_piece.size()) {
+            const Piece& q = scene.pieces[static_cast<std::size_t>(triangle_piece[tri])];
+            const double size = std::sqrt(std::min(p.area_m2, q.area_m2));
+            if (dot(p.normal, q.normal) < -kParallelCosine &&
+                hit.t * dot(dir, p.normal) < kNearContact * size) {
+                continue;
+            }
         }
+        sum += hit.t;
+        ++hits;
     }
     return hits > 0 ? sum / hits : scene.diagonal_m;
 }
@@ -68,8 +81,10 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
             const Vec3 dir = cosine_direction(p.normal, rng.next(), rng.next());
             const int hit = visibility.first_hit(x + p.normal * eps, dir, reach);
             if (hit < 0) return;
-            const Piece& q = scene.pieces[static_cast<std::size_t>(triangle_piece[static_cast<std::size_t>(hit)])];
-            if (dot(dir, q.normal) >= 0 && !scene.materials[static_cast<std::size_t>(q.material)].two_sided) {
+            const Piece& q = scene.pieces[static_cast<std::size_t>(
+                triangle_piece[static_cast<std::size_t>(hit)])];
+            if (dot(dir, q.normal) >= 0 &&
+                !scene.materials[static_cast<std::size_t>(q.material)].two_sided) {
                 return;
             }
         }

@@ -23,8 +23,13 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
 /// Mean distance (m) from the surfaces to the next surface along cosine-distributed rays:
 /// the mean free path of light between bounces, over which radiosity varies. It equals 4V/S in
 /// a convex room (Cauchy) and does not depend on the scene's orientation. Rays that escape are
-/// not counted; with no hit at all it is the scene's diagonal. Deterministic in `seed`.
+/// not counted; with no hit at all it is the scene's diagonal. Neither are rays across a
+/// near-contact gap (a parallel surface facing it nearer than 2 % of either's size, such as an
+/// emitter 1 mm above a floor): light there travels almost nothing, yet radiosity over the gap
+/// is as smooth as what the gap sees, except in a strip along its edges that refinement
+/// resolves; counting them would shrink every patch of the scene to the gap's width.
+/// `triangle_piece` maps the visibility's triangles to pieces. Deterministic in `seed`.
 double mean_free_path(const PreparedScene& scene, const Visibility& visibility,
-                      std::uint64_t seed, int rays = 4096);
+                      std::span<const int> triangle_piece, std::uint64_t seed, int rays = 4096);
 
 }  // namespace radiant

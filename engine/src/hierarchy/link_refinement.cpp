@@ -3,14 +3,17 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <numbers>
 
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
+#include "formfactor/area_average.h"
 #include "formfactor/point_polygon.h"
 #include "formfactor/quadrature.h"
 #include "formfactor/shadow_rays.h"
 #include "geometry/random.h"
+#include "solution/surface_summary.h"
 
 namespace radiant {
 namespace {
@@ -19,6 +22,10 @@ struct Pair {
     int receiver;
     int source;
 };
+
+// A source nearer to a receiver than this fraction of the receiver's diameter is
+// near-singular for the receiver's quadrature points (see Oracle::surface_factor).
+constexpr double kNearSingular = 0.25;
 
 enum class Decision { drop, link, split_receiver, split_source };
 
@@ -53,6 +60,11 @@ public:
         const Element& r = tree_[static_cast<std::size_t>(p.receiver)];
         const Element& s = tree_[static_cast<std::size_t>(p.source)];
         if (!may_exchange(r, s)) return {};
+        // Clusters only send (see choose_split). A cluster linked as a receiver would hand the
+        // irradiance of its few sample points to every part of it alike: the floor under an
+        // emitter would get what its sample points on the rest of the floor see, and a
+        // surface facing away what its neighbour facing the source gets.
+        if (r.cluster) return {Decision::split_receiver, {}};
         const double power_per_factor = r.area_m2 * s.radiosity_max;
         const double limit = criteria_.power_epsilon_lm;
         const bool split_r = tree_.can_subdivide(p.receiver) && (may_split || !r.leaf());
@@ -62,8 +74,18 @@ public:
         // A cluster stands in for its parts only from afar: near it, the point-to-disk kernels of
         // its samples misjudge the factor — even a black cluster's, whose factor still counts
         // when a receiver's factor sum is completed to 1.
-        const bool clusters = r.cluster || s.cluster;
-        if (clusters && split != Decision::link && near_cluster(r, s)) return {split, {}};
+        const bool clusters = s.cluster;
+        if (clusters && split != Decision::link && box_distance(r, s) < s.diameter_m) {
+            return {split, {}};
+        }
+        // A cluster's sample points stand for its mean radiosity; a bright part of it (an
+        // emitter among dark surfaces) may lie where no sample point does. Its light above the
+        // mean is bounded by the factor of the whole cluster seen from the nearest point.
+        if (clusters && split != Decision::link) {
+            const double above_mean =
+                s.radiosity_max - photometric(s.radiosity, criteria_.channels);
+            if (r.area_m2 * above_mean * factor_bound(r, s) > limit) return {split, {}};
+        }
 
         // Decide from the unoccluded kernel first: most splits need no shadow ray at all.
         const KernelSamples open = kernel(r, s, p, false, rays);
@@ -78,7 +100,7 @@ public:
         if (error > limit && split != Decision::link) return {split, {}};
         Verdict v{Decision::link, {}};
         if (!s.cluster) {
-            v.parts.push_back({p.source, seen.factor});
+            v.parts.push_back({p.source, surface_factor(r, s, open, seen, limit)});
         } else {
             for (std::size_t m = 0; m < s.samples.size(); ++m) {
                 if (seen.sample_factor[m] > 0)
@@ -89,6 +111,51 @@ public:
     }
 
 private:
+    // The link's factor between two surface elements: the mean of the kernel over the
+    // receiver's points, with their visibility. Where the source is near-singular for the
+    // receiver — nearer than its points are to each other, but not touching (adjacent
+    // elements refine along their common edge instead) — those points miss the strip along the
+    // source's edges in which the factor falls from about 1 to about 0, so the unoccluded mean
+    // comes from adaptive cubature, scaled by the visible fraction the points saw — except for
+    // closed receivers, whose factor sums the solver completes (see closed()). The cubature stops
+    // when its error would move no more light than the link may carry uncertain (`limit`), so dim
+    // pairs cost little.
+    double surface_factor(const Element& r, const Element& s, const KernelSamples& open,
+                          const KernelSamples& seen, double limit) const {
+        const double gap = box_distance(r, s);
+        if (!(gap > 1e-9 * (r.diameter_m + s.diameter_m)) || gap >= kNearSingular * r.diameter_m ||
+            !(s.radiosity_max > 0) || closed(r)) {
+            return seen.factor;
+        }
+        const double mean = area_averaged_factor(r.polygon, r.normal, s.polygon, s.normal, 1e-3,
+                                                 limit / s.radiosity_max);
+        return open.factor > 0 ? mean * std::min(seen.factor / open.factor, 1.0) : mean;
+    }
+
+    // A receiver in a closed enclosure has its factor sum completed to 1 by the solver, which
+    // is exact only while all its links average the kernel over the same points.
+    bool closed(const Element& r) const {
+        const auto patch = static_cast<std::size_t>(r.patch);
+        return patch < criteria_.enclosed_patch.size() && criteria_.enclosed_patch[patch] != 0;
+    }
+
+    static double box_distance(const Element& r, const Element& s) {
+        double d2 = 0;
+        for (int a = 0; a < 3; ++a) {
+            const double d = std::max({s.lo[a] - r.hi[a], 0.0, r.lo[a] - s.hi[a]});
+            d2 += d * d;
+        }
+        return std::sqrt(d2);
+    }
+
+    // Upper bound of the factor from any point of r to all of s: A_s / (π d²), d the distance
+    // between their boxes (cosines ≤ 1), and never above 1.
+    static double factor_bound(const Element& r, const Element& s) {
+        const double d = box_distance(r, s), d2 = d * d;
+        const double area_over = s.area_m2 / std::numbers::pi;
+        return area_over < d2 ? area_over / d2 : 1.0;
+    }
+
     // Light passes only between elements that lie (partly) in front of each other.
     bool may_exchange(const Element& r, const Element& s) const {
         if (!r.cluster && !s.cluster) {
@@ -110,19 +177,6 @@ private:
             if (dot(c - surface->polygon[0], surface->normal) > 0) return true;
         }
         return false;
-    }
-
-    // Closer than a cluster's own size: the gap between the bounding boxes is under the
-    // diameter of the larger cluster of the pair.
-    static bool near_cluster(const Element& r, const Element& s) {
-        double gap2 = 0;
-        for (int a = 0; a < 3; ++a) {
-            const double d = std::max({r.lo[a] - s.hi[a], s.lo[a] - r.hi[a], 0.0});
-            gap2 += d * d;
-        }
-        const double size =
-            std::max(r.cluster ? r.diameter_m : 0.0, s.cluster ? s.diameter_m : 0.0);
-        return gap2 < size * size;
     }
 
     // HSA91: split the element that looks bigger from the other; area is a fair proxy. Clusters

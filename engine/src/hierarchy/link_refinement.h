@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "hierarchy/element_tree.h"
@@ -28,7 +29,10 @@ struct RefinementCriteria {
     std::uint64_t seed = 1;
     double ambient_irradiance = 0;  ///< guess of the reflected light, for new elements' estimates
     int channels = 1;
-    std::size_t max_bytes = 0;          ///< memory budget of the tree and links; 0: none
+    std::size_t max_bytes = 0;  ///< memory budget of the tree and links; 0: none
+    /// Root patches in a closed enclosure (see HierarchicalSystem): their near-singular links
+    /// keep the mean over their points, which the solver's completion of factor sums assumes.
+    std::span<const char> enclosed_patch;
     std::function<bool()> should_stop;  ///< polled between rounds and pairs, from any thread
     /// Told after each round: rounds done, rays cast and links made so far.
     std::function<void(int rounds, std::uint64_t rays, std::size_t links)> on_round;

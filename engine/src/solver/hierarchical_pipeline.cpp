@@ -105,6 +105,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     criteria.seed = options_.seed;
     criteria.ambient_irradiance = ambient;
     criteria.channels = channels;
+    criteria.enclosed_patch = enclosed;
     criteria.should_stop = [this] { return should_stop(); };
     const std::uint64_t rays_before_links = rays_;
     criteria.on_round = [&](int rounds, std::uint64_t rays, std::size_t links) {

@@ -146,7 +146,8 @@ Result Pipeline::run() {
     auto [triangles, triangle_piece] = occluder_triangles(prepared.scene);
     prepared.triangle_piece = std::move(triangle_piece);
     prepared.visibility = make_embree_visibility(triangles);
-    prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility, options_.seed);
+    prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility,
+                                               prepared.triangle_piece, options_.seed);
     Result solved =
         method == "hierarchical" ? run_hierarchical(prepared) : run_dense(prepared, method);
     report("done", 1.0, solved.stats.iterations, solved.stats.error_estimate,
