@@ -363,8 +363,13 @@ TEST(CoplanarOverlays, EmitterInCeilingAndRugOnFloorMatchCutSurfaces) {
     expect_finite(overlay);
     // The panel emits 2000 lm/m² over its 1 m², counted once.
     EXPECT_NEAR(overlay.stats.emitted_flux_lm, 2000.0, 1e-6);
-    EXPECT_NEAR(absorbed_over_emitted(overlay), 1.0, 1e-3) << describe(overlay);
-    EXPECT_NEAR(absorbed_over_emitted(cut), 1.0, 1e-3) << describe(cut);
+    // Closed rooms balance to the solve's tolerance (the estimate bounds the imbalance there);
+    // an overlay that leaked or counted light twice would move its balance away from the cut
+    // room's, whose links are the same but for the hidden patches.
+    EXPECT_NEAR(absorbed_over_emitted(overlay), 1.0, 0.01) << describe(overlay);
+    EXPECT_NEAR(absorbed_over_emitted(cut), 1.0, 0.01) << describe(cut);
+    EXPECT_NEAR(absorbed_over_emitted(overlay), absorbed_over_emitted(cut), 1e-3)
+        << describe(overlay) << " / " << describe(cut);
     for (const char* name : {"panel", "rug"}) {
         const auto* a = find_surface(overlay, name);
         const auto* b = find_surface(cut, name);
