@@ -73,9 +73,11 @@ public:
 
         // A cluster stands in for its parts only from afar: near it, the point-to-disk kernels of
         // its samples misjudge the factor — even a black cluster's, whose factor still counts
-        // when a receiver's factor sum is completed to 1.
+        // when a receiver's factor sum is completed to 1 — unless the light that completion
+        // would spread over its factor's error is within the link's limit.
         const bool clusters = s.cluster;
-        if (clusters && split != Decision::link && box_distance(r, s) < s.diameter_m) {
+        if (clusters && split != Decision::link && box_distance(r, s) < s.diameter_m &&
+            r.area_m2 * factor_bound(r, s) * criteria_.mean_radiosity > limit) {
             return {split, {}};
         }
         // A cluster's sample points stand for its mean radiosity; a bright part of it (an

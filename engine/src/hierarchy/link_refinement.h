@@ -25,7 +25,10 @@ struct Link {
 
 struct RefinementCriteria {
     double power_epsilon_lm = 0;  ///< a link may carry at most this much uncertain power
-    int rays_per_point = 4;       ///< shadow rays per receiver point toward a surface source
+    /// Mean radiosity of all surfaces (first guess): the light a closed receiver's factor-sum
+    /// completion spreads over an error in a factor, whatever the source's own radiosity.
+    double mean_radiosity = 0;
+    int rays_per_point = 4;  ///< shadow rays per receiver point toward a surface source
     std::uint64_t seed = 1;
     double ambient_irradiance = 0;  ///< guess of the reflected light, for new elements' estimates
     int channels = 1;

@@ -102,6 +102,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
             radiant_power += tree[e].area_m2 * photometric(tree[e].radiosity, channels);
     }
     criteria.power_epsilon_lm = kLinkPowerFraction * options_.tolerance * radiant_power;
+    criteria.mean_radiosity = area > 0 ? radiant_power / area : 0;
     criteria.seed = options_.seed;
     criteria.ambient_irradiance = ambient;
     criteria.channels = channels;
