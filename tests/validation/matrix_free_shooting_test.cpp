@@ -20,10 +20,11 @@ namespace {
 
 using testing::find_surface;
 
-/// Runs the pipeline as solve() does, with the dense limit at 0 polygons when `matrix_free`.
+/// Runs the pipeline as solve() does, with the dense shooting limit at 0 polygons when
+/// `matrix_free`.
 Result run(const Scene& scene, const SolveOptions& options, bool matrix_free) {
     PipelineLimits limits;
-    if (matrix_free) limits.max_dense_polygons = 0;
+    if (matrix_free) limits.max_dense_shooting_polygons = 0;
     Result result;
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
     arena.execute([&] { result = Pipeline(scene, options, nullptr, nullptr, limits).run(); });

@@ -136,9 +136,10 @@ Result Pipeline::run() {
     const std::size_t polygons = prepared.scene.pieces.size();
     std::string method = options_.method;
     if (method == "auto" && polygons > kMaxAutoDensePolygons) method = "hierarchical";
-    // Beyond the dense limit only shooting can do without the matrix.
-    const bool too_large = polygons > limits_.max_dense_polygons;
-    if (method != "hierarchical" && method != "shooting" && too_large) {
+    // Beyond the dense limit only shooting can do without the matrix, and it does so as soon as
+    // the mesh cannot fit the matrix's patch budget.
+    const bool matrix_free = method == "shooting" && polygons > limits_.max_dense_shooting_polygons;
+    if (method != "hierarchical" && method != "shooting" && polygons > limits_.max_dense_polygons) {
         result.error = "the scene has " + std::to_string(polygons) +
                        " convex polygons; the dense solvers handle at most " +
                        std::to_string(limits_.max_dense_polygons) +
@@ -150,9 +151,8 @@ Result Pipeline::run() {
     prepared.triangle_piece = std::move(triangle_piece);
     prepared.visibility = make_embree_visibility(triangles);
     prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility, options_.seed);
-    Result solved = method == "hierarchical"
-                        ? run_hierarchical(prepared)
-                        : run_dense(prepared, method, method == "shooting" && too_large);
+    Result solved = method == "hierarchical" ? run_hierarchical(prepared)
+                                             : run_dense(prepared, method, matrix_free);
     report("done", 1.0, solved.stats.iterations, solved.stats.error_estimate,
            solved.stats.unshot_fraction);
     return solved;

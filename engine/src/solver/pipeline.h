@@ -27,9 +27,12 @@ struct PreparedSolve {
 
 /// Size limits of the dense path; tests lower them to reach the matrix-free path on small scenes.
 struct PipelineLimits {
-    /// Above this many convex polygons the dense solvers refuse the scene, and `shooting` runs
-    /// without a form-factor matrix: n² factors would not fit (one patch per polygon at least).
+    /// Above this many convex polygons the dense solvers refuse the scene: n² factors would not
+    /// fit (one patch per polygon at least).
     std::size_t max_dense_polygons = 6000;
+    /// Above this many convex polygons `shooting` runs without a form-factor matrix: the mesh
+    /// cannot fit the dense path's patch budget (3000), and shooting needs no matrix.
+    std::size_t max_dense_shooting_polygons = 3000;
 };
 
 class Pipeline {
