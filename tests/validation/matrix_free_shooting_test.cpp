@@ -4,7 +4,10 @@
 // the thread count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,12 +25,13 @@ using testing::find_surface;
 
 /// Runs the pipeline as solve() does, with the dense shooting limit at 0 polygons when
 /// `matrix_free`.
-Result run(const Scene& scene, const SolveOptions& options, bool matrix_free) {
+Result run(const Scene& scene, const SolveOptions& options, bool matrix_free,
+           SolveObserver* observer = nullptr, const CancellationToken* cancel = nullptr) {
     PipelineLimits limits;
     if (matrix_free) limits.max_dense_shooting_polygons = 0;
     Result result;
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-    arena.execute([&] { result = Pipeline(scene, options, nullptr, nullptr, limits).run(); });
+    arena.execute([&] { result = Pipeline(scene, options, observer, cancel, limits).run(); });
     return result;
 }
 
@@ -154,6 +158,64 @@ TEST(MatrixFreeShooting, StopsAtTheTimeLimitWithAnErrorBound) {
     const auto* box = find_surface(r, "box");
     ASSERT_NE(box, nullptr);
     EXPECT_GE(box->average_radiosity, 1.0) << "at least the emission";
+}
+
+/// Records snapshots and cancels the solve after a few progress reports while shooting.
+class Recorder : public SolveObserver {
+public:
+    explicit Recorder(CancellationToken* cancel_after_shots) : cancel_(cancel_after_shots) {}
+    void on_progress(const Progress& p) override {
+        const std::lock_guard lock(mutex_);
+        if (p.stage == "solving" && p.iterations > 0) {
+            ++solving_reports;
+            max_rays = std::max(max_rays, p.rays);
+            if (cancel_ && solving_reports >= 3) cancel_->cancel();
+        }
+    }
+    void on_snapshot(const Snapshot& snapshot) override {
+        const std::lock_guard lock(mutex_);
+        snapshots.push_back(snapshot);
+    }
+    std::vector<Snapshot> snapshots;
+    int solving_reports = 0;
+    std::uint64_t max_rays = 0;
+
+private:
+    CancellationToken* cancel_;
+    std::mutex mutex_;
+};
+
+TEST(MatrixFreeShooting, SnapshotsProgressAndMeshAsTheDensePath) {
+    SolveOptions options = shooting(0.01);
+    options.snapshot_interval_seconds = 0;  // every chance the solver gives
+    options.want_mesh = true;
+    Recorder recorder(nullptr);
+    const Result r = run(ceiling_room(), options, true, &recorder);
+    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+    EXPECT_GT(recorder.solving_reports, 0);
+    EXPECT_GT(recorder.max_rays, 0u) << "rays are counted as the shots cast them";
+    ASSERT_GE(recorder.snapshots.size(), 2u);
+    const Snapshot& last = recorder.snapshots.back();
+    EXPECT_TRUE(last.final);
+    ASSERT_TRUE(r.mesh.has_value());
+    EXPECT_FALSE(r.mesh->triangles.empty());
+    EXPECT_EQ(last.mesh->triangle_radiosity, r.mesh->triangle_radiosity);
+    EXPECT_EQ(last.progress.error_estimate, r.stats.error_estimate);
+    ASSERT_EQ(r.sensors.size(), 1u);
+    EXPECT_EQ(r.sensors[0].illuminance.size(), 16u);
+}
+
+TEST(MatrixFreeShooting, CancellationStopsWithTheBestResultSoFar) {
+    CancellationToken cancel;
+    Recorder recorder(&cancel);
+    const Result r = run(furnace_cube(0.999), shooting(0.01), true, &recorder, &cancel);
+    ASSERT_TRUE(r.error.empty()) << r.error;
+    EXPECT_EQ(r.status, SolveStatus::stopped) << describe(r);
+    EXPECT_GT(r.stats.iterations, 0u);
+    EXPECT_GT(r.stats.error_estimate, 0.01 / 4);
+    const auto* box = find_surface(r, "box");
+    ASSERT_NE(box, nullptr);
+    EXPECT_GT(box->average_radiosity, 1.0) << "some light was shot before the cancellation";
 }
 
 TEST(MatrixFreeShooting, DoesNotDependOnThreads) {
