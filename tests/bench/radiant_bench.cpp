@@ -6,10 +6,12 @@
 // scaling series and the time each method needs to reach a target error.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -142,6 +144,7 @@ int main(int argc, char** argv) {
     std::string data_dir = RADIANT_TEST_DATA;
     std::string cache_dir = RADIANT_BENCH_CACHE;
     double max_seconds = 60;
+    std::vector<std::string> method_seconds, method_tolerances;
     double reference_tolerance = 0.002;
     double reference_seconds = 3600;
     double target_error = 0.02;
@@ -156,6 +159,14 @@ int main(int argc, char** argv) {
                    "default: all")
         ->delimiter(',');
     app.add_option("--max-seconds", max_seconds, "time cap of each case")->capture_default_str();
+    app.add_option("--method-seconds", method_seconds,
+                   "time caps of one method's cases, METHOD=S (repeat or comma-separate), e.g. "
+                   "shooting=900; the others keep --max-seconds")
+        ->delimiter(',');
+    app.add_option("--method-tolerance", method_tolerances,
+                   "tolerances of one method's cases, METHOD=T (repeat or comma-separate, e.g. "
+                   "shooting=0.3,shooting=0.1); the others keep --tolerance")
+        ->delimiter(',');
     app.add_option("--out", out_stem, "writes STEM.md, STEM.csv, STEM.gp and STEM.png")
         ->capture_default_str();
     app.add_option("--reference-tolerance", reference_tolerance,
@@ -171,12 +182,38 @@ int main(int argc, char** argv) {
     app.add_option("--threads", threads, "worker threads (0: all cores)");
     CLI11_PARSE(app, argc, argv);
 
+    const auto& solvers = solver_names();
+    auto known_method = [&](const std::string& m) {
+        return std::find(solvers.begin(), solvers.end(), m) != solvers.end();
+    };
     for (const auto& m : methods) {
-        const auto& names = solver_names();
-        if (std::find(names.begin(), names.end(), m) == names.end()) {
+        if (!known_method(m)) {
             std::cerr << "radiant-bench: unknown method " << m << '\n';
             return 2;
         }
+    }
+    // METHOD=NUMBER items of --method-seconds and --method-tolerance.
+    auto per_method = [&](const std::vector<std::string>& items, const char* option,
+                          std::map<std::string, std::vector<double>>& out) {
+        for (const auto& item : items) {
+            const auto eq = item.find('=');
+            char* end = nullptr;
+            const double value =
+                eq == std::string::npos ? 0 : std::strtod(item.c_str() + eq + 1, &end);
+            if (eq == std::string::npos || !known_method(item.substr(0, eq)) || end == nullptr ||
+                *end != '\0' || !(value > 0)) {
+                std::cerr << "radiant-bench: " << option << " wants METHOD=NUMBER, got " << item
+                          << '\n';
+                return false;
+            }
+            out[item.substr(0, eq)].push_back(value);
+        }
+        return true;
+    };
+    std::map<std::string, std::vector<double>> cap_of_method, tolerances_of_method;
+    if (!per_method(method_seconds, "--method-seconds", cap_of_method) ||
+        !per_method(method_tolerances, "--method-tolerance", tolerances_of_method)) {
+        return 2;
     }
     const fs::path data(data_dir);
     nlohmann::json expected;
@@ -249,15 +286,18 @@ int main(int argc, char** argv) {
         }
         const std::size_t triangles = input_triangles(bench.scene);
         for (const auto& method : methods) {
-            for (const double tol : tolerances) {
+            const auto cap = cap_of_method.find(method);
+            const double seconds = cap != cap_of_method.end() ? cap->second.back() : max_seconds;
+            const auto own = tolerances_of_method.find(method);
+            for (const double tol : own != tolerances_of_method.end() ? own->second : tolerances) {
                 SolveOptions options = options_from(bench.scene.settings);
                 options.method = method;
                 options.tolerance = tol;
-                options.max_seconds = max_seconds;
+                options.max_seconds = seconds;
                 options.threads = threads;
                 const auto outcome =
                     run_isolated([&] { return solve_case(bench.scene, options, bench.reference); },
-                                 watchdog_for(max_seconds));
+                                 watchdog_for(seconds));
                 BenchRow row;
                 row.scene = name;
                 row.triangles = triangles;

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
 #include "formfactor/luminaire_light.h"
 #include "formfactor/point_polygon.h"
 #include "formfactor/receiver_rule.h"
@@ -69,44 +73,51 @@ double Transport::point_to_patch(const Vec3& x, const Vec3& n, std::size_t j, st
     return f * visible_fraction(x, n, j, m, key, rays);
 }
 
-void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays) const {
+void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays,
+                                bool parallel) const {
     const PatchGeometry& rcv = patches_.patch(i);
     const auto& rule = rules_[i];
     const std::size_t n = patches_.size();
     const std::size_t points = rule.size();
     const int per_point = std::max(
         1, (options_.rays_per_link + static_cast<int>(points) - 1) / static_cast<int>(points));
-    // Unoccluded sources are exact; occluded ones are sampled per receiver point and kept apart
-    // so that an enclosed receiver can complete them to 1 point by point.
-    std::vector<double> clear_sum(points, 0.0), sampled_sum(points, 0.0);
-    std::vector<std::size_t> sampled_sources;
-    std::vector<double> sampled;  // [m * points + k]
-    for (std::size_t j = 0; j < n; ++j) {
-        row[j] = 0.0f;
-        if (j == i || !faces_each_other(i, j)) continue;
+    // Per source: none, clear (unoccluded: exact) or sampled, with its factor at every receiver
+    // point. Unoccluded and sampled sources are kept apart so that an enclosed receiver can
+    // complete the sampled ones to 1 point by point.
+    enum : char { kNone, kClear, kSampled };
+    std::vector<char> kind(n, kNone);
+    std::vector<double> factor(n * points, 0.0);  // [j * points + k]
+    auto source = [&](std::size_t j, std::uint64_t& local_rays) {
+        if (j == i || !faces_each_other(i, j)) return;
         const PatchGeometry& src = patches_.patch(j);
         const bool blocked = culling_.maybe_blocked(rcv.piece, rcv.vertices, rcv.normal, src.piece,
                                                     src.vertices, src.normal);
-        if (!blocked) {
-            double sum = 0;
-            for (std::size_t k = 0; k < points; ++k) {
-                const double f = front_factor(rule[k].position, rcv.normal, src);
-                clear_sum[k] += f;
-                sum += rule[k].weight * f;
-            }
-            row[j] = static_cast<float>(sum / rcv.area_m2);
-            continue;
-        }
-        sampled_sources.push_back(j);
+        kind[j] = blocked ? kSampled : kClear;
         for (std::size_t k = 0; k < points; ++k) {
             double f = front_factor(rule[k].position, rcv.normal, src);
-            if (f > 0) {
+            if (blocked && f > 0) {
                 f *= visible_fraction(rule[k].position, rcv.normal, j, per_point,
-                                      (static_cast<std::uint64_t>(i) << 20) ^ k, rays);
+                                      (static_cast<std::uint64_t>(i) << 20) ^ k, local_rays);
             }
-            sampled.push_back(f);
-            sampled_sum[k] += f;
+            factor[j * points + k] = f;
         }
+    };
+    if (parallel) {
+        tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const auto& range) {
+            std::uint64_t& local = ray_count.local();
+            for (std::size_t j = range.begin(); j != range.end(); ++j) source(j, local);
+        });
+        rays += ray_count.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
+    } else {
+        for (std::size_t j = 0; j < n; ++j) source(j, rays);
+    }
+    // Sums in source order, so that the row does not depend on how the sources were shared out.
+    std::vector<double> clear_sum(points, 0.0), sampled_sum(points, 0.0);
+    for (std::size_t j = 0; j < n; ++j) {
+        if (kind[j] == kNone) continue;
+        auto& sum = kind[j] == kClear ? clear_sum : sampled_sum;
+        for (std::size_t k = 0; k < points; ++k) sum[k] += factor[j * points + k];
     }
     std::vector<double> scale(points, 1.0);
     if (enclosed_[i]) {
@@ -114,11 +125,15 @@ void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays) 
             if (sampled_sum[k] > 0) scale[k] = std::max(0.0, 1.0 - clear_sum[k]) / sampled_sum[k];
         }
     }
-    for (std::size_t m = 0; m < sampled_sources.size(); ++m) {
+    for (std::size_t j = 0; j < n; ++j) {
         double sum = 0;
-        for (std::size_t k = 0; k < points; ++k)
-            sum += rule[k].weight * scale[k] * sampled[m * points + k];
-        row[sampled_sources[m]] = static_cast<float>(sum / rcv.area_m2);
+        if (kind[j] == kClear) {
+            for (std::size_t k = 0; k < points; ++k) sum += rule[k].weight * factor[j * points + k];
+        } else if (kind[j] == kSampled) {
+            for (std::size_t k = 0; k < points; ++k)
+                sum += rule[k].weight * scale[k] * factor[j * points + k];
+        }
+        row[j] = static_cast<float>(sum / rcv.area_m2);
     }
 }
 

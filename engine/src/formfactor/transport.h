@@ -41,7 +41,10 @@ public:
                           std::uint64_t& rays) const;
 
     /// Row i of the form-factor matrix (receiver i, all sources) into `row` (size = patches).
-    void form_factor_row(std::size_t i, float* row, std::uint64_t& rays) const;
+    /// `parallel` spreads the sources over the calling arena's threads (for a single row, as
+    /// matrix-free shooting needs); the row is the same either way, whatever the thread count.
+    void form_factor_row(std::size_t i, float* row, std::uint64_t& rays,
+                         bool parallel = false) const;
 
     /// Irradiance (lux, per channel) from every luminaire: on patch i (area average, exact
     /// flux when unoccluded) or at a point.

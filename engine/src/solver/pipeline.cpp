@@ -15,6 +15,7 @@
 #include "solution/gouraud.h"
 #include "solution/sensors.h"
 #include "solution/surface_summary.h"
+#include "solver/shooting_solver.h"
 #include "solver/solver.h"
 
 namespace radiant {
@@ -23,9 +24,9 @@ namespace {
 // Above this many patches the dense solvers' n² memory and time stop paying; the patch size
 // grows instead (the hierarchical solver is the answer for larger models).
 constexpr std::size_t kMaxDensePatches = 3000;
-// A model with more polygons than this cannot be meshed within the dense solvers' budget
-// (one patch per polygon at least); it needs the hierarchical solver, so it is refused clearly.
-constexpr std::size_t kMaxDensePolygons = 6000;
+// Matrix-free shooting keeps O(patches) memory, but every shot costs O(patches) factors: the
+// patch size stays at its target (no growth to fit a budget) unless the mesh would exceed this.
+constexpr std::size_t kMaxMatrixFreePatches = 1'000'000;
 // `auto` solves scenes with at most this many convex polygons densely: a handful of walls,
 // where the full matrix costs less than building a hierarchy.
 constexpr std::size_t kMaxAutoDensePolygons = 12;
@@ -49,11 +50,12 @@ std::pair<std::vector<Triangle>, std::vector<int>> occluder_triangles(const Prep
 }  // namespace
 
 Pipeline::Pipeline(const Scene& scene, const SolveOptions& options, SolveObserver* observer,
-                   const CancellationToken* cancel)
+                   const CancellationToken* cancel, PipelineLimits limits)
     : scene_(scene),
       options_(options),
       observer_(observer),
       cancel_(cancel),
+      limits_(limits),
       start_(Clock::now()),
       snapshots_(observer, options.snapshot_interval_seconds, start_) {
     if (options.max_seconds) {
@@ -136,10 +138,14 @@ Result Pipeline::run() {
     const std::size_t polygons = prepared.scene.pieces.size();
     std::string method = options_.method;
     if (method == "auto" && polygons > kMaxAutoDensePolygons) method = "hierarchical";
-    if (method != "hierarchical" && polygons > kMaxDensePolygons) {
+    // Beyond the dense limit only shooting can do without the matrix, and it does so as soon as
+    // the mesh cannot fit the matrix's patch budget.
+    const bool matrix_free = method == "shooting" && polygons > limits_.max_dense_shooting_polygons;
+    if (method != "hierarchical" && method != "shooting" && polygons > limits_.max_dense_polygons) {
         result.error = "the scene has " + std::to_string(polygons) +
                        " convex polygons; the dense solvers handle at most " +
-                       std::to_string(kMaxDensePolygons) + " (use method \"hierarchical\")";
+                       std::to_string(limits_.max_dense_polygons) +
+                       " (use method \"hierarchical\" or \"shooting\")";
         return result;
     }
     omerr().disable();  // T-junction fallbacks are expected, not errors to print
@@ -148,21 +154,27 @@ Result Pipeline::run() {
     prepared.visibility = make_embree_visibility(triangles);
     prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility,
                                                prepared.triangle_piece, options_.seed);
-    Result solved =
-        method == "hierarchical" ? run_hierarchical(prepared) : run_dense(prepared, method);
+    Result solved = method == "hierarchical" ? run_hierarchical(prepared)
+                                             : run_dense(prepared, method, matrix_free);
     report("done", 1.0, solved.stats.iterations, solved.stats.error_estimate,
            solved.stats.unshot_fraction);
     return solved;
 }
 
-Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& requested) {
+Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& requested,
+                           bool matrix_free) {
     Result result;
     result.scene = scene_.name;
     const PreparedScene& prepared = solve_input.scene;
     const Visibility& visibility = *solve_input.visibility;
-    PatchMesh patches(
-        prepared,
-        {target_patch_edge(solve_input.mean_free_path_m, options_.tolerance), kMaxDensePatches});
+    const double patch_edge = target_patch_edge(solve_input.mean_free_path_m, options_.tolerance);
+    // Without a matrix the patches keep their target size, and only gaps narrower than an
+    // eighth of it cut them (the hierarchical roots' gap at this tolerance): every patch costs a
+    // factor in every shot, and the dense mesh's half-patch gap splits the floor along every
+    // piece of furniture (office-x64: 100 000 patches).
+    PatchMesh patches(prepared, matrix_free ? MeshingOptions{patch_edge, kMaxMatrixFreePatches,
+                                                             0.125 * patch_edge}
+                                            : MeshingOptions{patch_edge, kMaxDensePatches});
     const std::size_t n = patches.size();
     const int channels = prepared.channels;
 
@@ -199,9 +211,10 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         snapshots_.offer(display_mesh(emitted), 1);
     }
 
-    // Form factors, one receiver row per task; rays counted per thread.
+    // Form factors, one receiver row per task; rays counted per thread. Without a matrix only
+    // the luminaires' light is computed here; the factors come row by row while shooting.
     report("form factors", 0.05);
-    std::vector<float> form_factors(n * n, 0.0f);
+    std::vector<float> form_factors(matrix_free ? 0 : n * n, 0.0f);
     std::vector<Rgb> luminaire_irradiance(n, Rgb{0, 0, 0});
     tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
     std::atomic<bool> interrupted{false};
@@ -212,7 +225,7 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
             return;
         }
         std::uint64_t& local = ray_count.local();
-        transport.form_factor_row(i, &form_factors[i * n], local);
+        if (!matrix_free) transport.form_factor_row(i, &form_factors[i * n], local);
         luminaire_irradiance[i] = transport.luminaire_irradiance_on_patch(i, local);
     });
     rays_ += ray_count.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
@@ -223,7 +236,7 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     LinearSystem system;
     system.n = n;
     system.channels = channels;
-    system.form_factors = &form_factors;
+    system.form_factors = matrix_free ? nullptr : &form_factors;
     system.area_m2.resize(n);
     for (int c = 0; c < channels; ++c) {
         system.reflectance[static_cast<std::size_t>(c)].resize(n);
@@ -246,6 +259,8 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         requested != "auto" ? requested : (n <= kMaxAutoDirectPatches ? "direct" : "gauss-seidel");
     const auto solver = make_solver(method);
     SolverOutcome outcome;
+    // Matrix-free shooting: F·(shot radiosity), the reflected light each patch received.
+    std::array<std::vector<double>, 3> gathered;
     bool stopped = interrupted.load();
     if (!stopped) {
         report("solving", 0.6);
@@ -256,7 +271,13 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
                 snapshots_.offer(display_mesh(radiosity), 1);
             };
         }
-        outcome = solver->solve(system, control);
+        if (matrix_free) {
+            std::uint64_t factors = 0;
+            outcome = shoot_matrix_free(system, transport, control, rays_, factors, gathered);
+            links_ = static_cast<std::size_t>(factors);
+        } else {
+            outcome = solver->solve(system, control);
+        }
         stopped = !outcome.converged;
     } else {
         // Interrupted before the matrix was complete: the best answer is the first bounce.
@@ -268,7 +289,8 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         outcome.unshot_fraction = 1.0;
     }
 
-    // Irradiance per patch: H = F·B + direct light from luminaires.
+    // Irradiance per patch: H = F·B + direct light from luminaires (without a matrix, F·B over
+    // the radiosity shot so far; what is still unshot is within the error estimate).
     std::vector<SolvedElement> solved(n);
     for (std::size_t i = 0; i < n; ++i) {
         const PatchGeometry& p = patches.patch(i);
@@ -279,7 +301,11 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         const std::vector<double>& b = outcome.radiosity[ci];
         tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
             double g = 0;
-            for (std::size_t j = 0; j < n; ++j) g += form_factors[i * n + j] * b[j];
+            if (matrix_free) {
+                g = gathered[ci].empty() ? 0.0 : gathered[ci][i];
+            } else {
+                for (std::size_t j = 0; j < n; ++j) g += form_factors[i * n + j] * b[j];
+            }
             solved[i].irradiance[ci] = g + luminaire_irradiance[i][ci];
             solved[i].radiosity[ci] = b[i];
         });

@@ -25,17 +25,29 @@ struct PreparedSolve {
     double mean_free_path_m = 0;
 };
 
+/// Size limits of the dense path; tests lower them to reach the matrix-free path on small scenes.
+struct PipelineLimits {
+    /// Above this many convex polygons the dense solvers refuse the scene: n² factors would not
+    /// fit (one patch per polygon at least).
+    std::size_t max_dense_polygons = 6000;
+    /// Above this many convex polygons `shooting` runs without a form-factor matrix: the mesh
+    /// cannot fit the dense path's patch budget (3000), and shooting needs no matrix.
+    std::size_t max_dense_shooting_polygons = 3000;
+};
+
 class Pipeline {
 public:
     using Clock = std::chrono::steady_clock;
 
     Pipeline(const Scene& scene, const SolveOptions& options, SolveObserver* observer,
-             const CancellationToken* cancel);
+             const CancellationToken* cancel, PipelineLimits limits = {});
 
     Result run();
 
 private:
-    Result run_dense(const PreparedSolve& prepared, const std::string& method);
+    /// Patch mesh and one of the matrix solvers, or (`matrix_free`) shooting with each shooter's
+    /// factors computed when it shoots.
+    Result run_dense(const PreparedSolve& prepared, const std::string& method, bool matrix_free);
     Result run_hierarchical(const PreparedSolve& prepared);
 
     void report(const std::string& stage, double fraction, std::size_t iterations = 0,
@@ -59,6 +71,7 @@ private:
     const SolveOptions& options_;
     SolveObserver* observer_;
     const CancellationToken* cancel_;
+    PipelineLimits limits_;
     Clock::time_point start_;
     std::optional<Clock::time_point> deadline_;
     std::uint64_t rays_ = 0;

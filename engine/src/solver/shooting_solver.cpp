@@ -5,6 +5,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "formfactor/transport.h"
+
 namespace radiant {
 
 double shooting_relaxation(const LinearSystem& s) {
@@ -19,27 +21,24 @@ double shooting_relaxation(const LinearSystem& s) {
     return area > 0 ? std::min(1.5, 1.0 + 0.5 * rho_area / area) : 1.0;
 }
 
-SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& control) const {
+SolverOutcome progressive_shooting(const LinearSystem& s, const std::array<ContractionNorms, 3>& q,
+                                   const ShooterColumn& shooter_column, std::size_t check_every,
+                                   const SolverControl& control,
+                                   std::array<std::vector<double>, 3>* gathered) {
     SolverOutcome out;
     const std::size_t n = s.n;
     const int channels = s.channels;
     const double omega = shooting_relaxation(s);
+    check_every = std::max<std::size_t>(1, check_every);
 
-    // Columns of F are what a shooter distributes: transpose once for contiguous access.
-    std::vector<float> ft(n * n);
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t j) {
-        for (std::size_t i = 0; i < n; ++i) ft[j * n + i] = s.f(i, j);
-    });
-
-    std::array<ContractionNorms, 3> q;
     std::array<std::vector<double>, 3> shot, unshot;  // B = shot + unshot
     double total_area = 0, emitted = 0;
     for (std::size_t i = 0; i < n; ++i) total_area += s.area_m2[i];
     for (int c = 0; c < channels; ++c) {
         const auto ci = static_cast<std::size_t>(c);
-        q[ci] = contraction_norms(s, c);
         shot[ci].assign(n, 0.0);
         unshot[ci] = s.source[ci];
+        if (gathered) (*gathered)[ci].assign(n, 0.0);
         emitted = std::max(emitted, area_weighted_sum(s.source[ci], s.area_m2));
     }
 
@@ -62,8 +61,6 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
         return worst;
     };
 
-    // The O(n) estimate is cheap next to a shot's O(n) update only every few shots.
-    const std::size_t check_every = std::max<std::size_t>(1, n / 16);
     auto last_report = std::chrono::steady_clock::now();
     auto last_snapshot = last_report;
     const std::size_t max_shots = 1000 * std::max<std::size_t>(n, 1000);
@@ -108,7 +105,7 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
             out.converged = out.error_estimate <= control.tolerance;
             break;
         }
-        const float* column = &ft[shooter * n];
+        const float* column = shooter_column(shooter);
         for (int c = 0; c < channels; ++c) {
             const auto ci = static_cast<std::size_t>(c);
             const double delta = omega * unshot[ci][shooter];
@@ -117,6 +114,10 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
             const auto& rho = s.reflectance[ci];
             auto& u = unshot[ci];
             for (std::size_t i = 0; i < n; ++i) u[i] += rho[i] * column[i] * delta;
+            if (gathered) {
+                auto& g = (*gathered)[ci];
+                for (std::size_t i = 0; i < n; ++i) g[i] += column[i] * delta;
+            }
         }
         ++out.iterations;
     }
@@ -128,6 +129,55 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
         out.unshot[ci] = std::move(unshot[ci]);
     }
     return out;
+}
+
+SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& control) const {
+    const std::size_t n = s.n;
+    // Columns of F are what a shooter distributes: transpose once for contiguous access.
+    std::vector<float> ft(n * n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t j) {
+        for (std::size_t i = 0; i < n; ++i) ft[j * n + i] = s.f(i, j);
+    });
+    std::array<ContractionNorms, 3> q;
+    for (int c = 0; c < s.channels; ++c) q[static_cast<std::size_t>(c)] = contraction_norms(s, c);
+    // The O(n) estimate is cheap next to a shot's O(n) update only every few shots.
+    return progressive_shooting(
+        s, q, [&](std::size_t shooter) { return &ft[shooter * n]; }, n / 16, control);
+}
+
+ContractionNorms reciprocal_norms(const LinearSystem& s, int channel, double row_sum) {
+    double rho_max = 0;
+    for (const double rho : s.reflectance[static_cast<std::size_t>(channel)])
+        rho_max = std::max(rho_max, rho);
+    ContractionNorms q;
+    q.q_inf = 1;  // no bound
+    q.q_1 = rho_max * row_sum;
+    return q;
+}
+
+SolverOutcome shoot_matrix_free(const LinearSystem& s, const Transport& transport,
+                                const SolverControl& control, std::uint64_t& rays,
+                                std::uint64_t& factors,
+                                std::array<std::vector<double>, 3>& gathered) {
+    const std::size_t n = s.n;
+    // Rows of F sum to at most 1 up to rounding (exactly 1 per point for enclosed receivers).
+    constexpr double kRowSum = 1.0 + 1e-6;
+    std::array<ContractionNorms, 3> q;
+    for (int c = 0; c < s.channels; ++c)
+        q[static_cast<std::size_t>(c)] = reciprocal_norms(s, c, kRowSum);
+    std::vector<float> row(n), column(n);
+    auto shooter_column = [&](std::size_t shooter) {
+        transport.form_factor_row(shooter, row.data(), rays, true);
+        const double a = s.area_m2[shooter];
+        tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+            column[i] = s.area_m2[i] > 0 ? static_cast<float>(row[i] * a / s.area_m2[i]) : 0.0f;
+        });
+        factors += static_cast<std::uint64_t>(
+            std::count_if(row.begin(), row.end(), [](float f) { return f > 0; }));
+        return column.data();
+    };
+    // A shot computes a whole row of factors: the O(n) estimate costs nothing next to it.
+    return progressive_shooting(s, q, shooter_column, 1, control, &gathered);
 }
 
 }  // namespace radiant

@@ -2,11 +2,20 @@
 // Southwell iteration (Gortler, Cohen & Slusallek 1993): the patch with the most unshot power
 // shoots it to every other patch. Over-relaxation (ω > 1) shoots a little more than is unshot,
 // anticipating what the patch will receive back; unshot values may then turn negative.
+//
+// Two sources of the shooter's factors share one loop: the dense form-factor matrix
+// (ShootingSolver), or the shooter's own factors computed when it shoots, with nothing stored
+// but O(patches) state (shoot_matrix_free, for scenes too large for the matrix).
 #pragma once
+
+#include <cstdint>
+#include <functional>
 
 #include "solver/solver.h"
 
 namespace radiant {
+
+class Transport;
 
 class ShootingSolver final : public Solver {
 public:
@@ -17,5 +26,33 @@ public:
 /// ω from the mean reflectance: 1 + ρ̄/2, at most 1.5 (Feda & Purgathofer 1992 report gains
 /// growing with reflectivity; larger values oscillate).
 double shooting_relaxation(const LinearSystem& system);
+
+/// Column `shooter` of F: F(i←shooter) for every receiver i (n values, valid until the next call).
+using ShooterColumn = std::function<const float*(std::size_t shooter)>;
+
+/// The Southwell loop. `norms` (per channel) bound M = diag(ρ)F for the error estimate; the
+/// estimate is refreshed every `check_every` shots. With `gathered`, F·(shot radiosity) is
+/// accumulated there per channel (the irradiance from reflected light, without a matrix).
+SolverOutcome progressive_shooting(const LinearSystem& system,
+                                   const std::array<ContractionNorms, 3>& norms,
+                                   const ShooterColumn& column, std::size_t check_every,
+                                   const SolverControl& control,
+                                   std::array<std::vector<double>, 3>* gathered = nullptr);
+
+/// Norms of M for a system whose every row of F sums to at most `row_sum` (closed: 1): with
+/// reciprocity, column j of diag(A)M sums to A_j Σ_i ρ_i F_ji ≤ A_j ρmax·row_sum, so
+/// q_1 ≤ ρmax·row_sum; the max-norm gives no bound (F_ij = F_ji A_j/A_i has no bounded row sum).
+/// Its error bound is then the unshot-energy bound U·ρmax/(1 − ρmax) / Σ A B.
+ContractionNorms reciprocal_norms(const LinearSystem& system, int channel, double row_sum);
+
+/// Shooting without a form-factor matrix (`system.form_factors` unused): when patch s shoots,
+/// its row F(s←i) is computed by `transport` over all patches (in parallel, the same factors as
+/// the dense matrix's row s), and reciprocity gives each receiver F(i←s) = F(s←i)·A_s/A_i.
+/// Memory O(patches). Rays are added to `rays` as they are cast; `factors` counts the non-zero
+/// factors computed; `gathered` receives F·(shot radiosity) per channel.
+SolverOutcome shoot_matrix_free(const LinearSystem& system, const Transport& transport,
+                                const SolverControl& control, std::uint64_t& rays,
+                                std::uint64_t& factors,
+                                std::array<std::vector<double>, 3>& gathered);
 
 }  // namespace radiant
