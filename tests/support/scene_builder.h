@@ -134,6 +134,15 @@ inline std::vector<Polygon> box_faces(Vec3 lo, Vec3 hi, bool facing_in) {
 }
 
 /// Replaces every box surface by six polygon surfaces named "<name>/0" … "<name>/5".
+/// §2.2 furnace: a closed unit cube whose every face emits E = 1 and reflects ρ: B = 1/(1 − ρ).
+inline Scene furnace_cube(double rho) {
+    Scene scene;
+    scene.name = "furnace-cube";
+    scene.materials = {gray("glow", rho, 1.0)};
+    scene.surfaces = {box_surface("box", "glow", {0, 0, 0}, {1, 1, 1}, true)};
+    return scene;
+}
+
 inline Scene boxes_as_polygons(Scene scene) {
     std::vector<Surface> out;
     for (auto& s : scene.surfaces) {

@@ -32,14 +32,6 @@ std::string describe(const Result& r) {
 // ---------------------------------------------------------------------------------------------
 // §2.2 furnace: every surface emits E = 1 and reflects ρ in a closed enclosure: B = 1/(1 − ρ).
 
-Scene furnace_cube(double rho) {
-    Scene scene;
-    scene.name = "furnace-cube";
-    scene.materials = {testing::gray("glow", rho, 1.0)};
-    scene.surfaces = {testing::box_surface("box", "glow", {0, 0, 0}, {1, 1, 1}, true)};
-    return scene;
-}
-
 struct FurnaceCase {
     double rho;
     double rel_tol;
@@ -53,7 +45,7 @@ class FurnaceCube : public ::testing::TestWithParam<FurnaceCase> {};
 
 TEST_P(FurnaceCube, AverageRadiosityIsEOverOneMinusRho) {
     const auto [rho, rel_tol] = GetParam();
-    const Result r = solve_default(furnace_cube(rho));
+    const Result r = solve_default(testing::furnace_cube(rho));
     ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
     const auto* box = find_surface(r, "box");
     ASSERT_NE(box, nullptr);

@@ -447,15 +447,16 @@ TEST_P(EmitterOneMillimetreAbove, ReceiverGetsTheFormFactor) {
     EXPECT_LT(r.stats.elements, kNearElementLimit) << describe(r);
 }
 
+std::string near_case_name(const ::testing::TestParamInfo<NearCase>& param_info) {
+    return std::string(param_info.param.method) + "_" + param_info.param.variant;
+}
+
 INSTANTIATE_TEST_SUITE_P(Variants, EmitterOneMillimetreAbove,
                          ::testing::Values(NearCase{"hierarchical", "m"},
                                            NearCase{"hierarchical", "mm"},
                                            NearCase{"hierarchical", "far"}, NearCase{"auto", "m"},
                                            NearCase{"auto", "mm"}, NearCase{"auto", "far"}),
-                         [](const auto& param_info) {
-                             return std::string(param_info.param.method) + "_" +
-                                    param_info.param.variant;
-                         });
+                         near_case_name);
 
 // The scene: the emitter 1 mm above the middle of an open, black 10 × 10 m floor. The
 // floor gets all the light but what escapes the gap sideways and misses it (< 0.2 %), with
@@ -496,10 +497,7 @@ INSTANTIATE_TEST_SUITE_P(Variants, EmitterOneMillimetreAboveLargeFloor,
                          ::testing::Values(NearCase{"hierarchical", "m"},
                                            NearCase{"hierarchical", "mm"},
                                            NearCase{"hierarchical", "far"}, NearCase{"auto", "m"}),
-                         [](const auto& param_info) {
-                             return std::string(param_info.param.method) + "_" +
-                                    param_info.param.variant;
-                         });
+                         near_case_name);
 
 // The 1 × 1 m emitter 1 mm above the floor of a closed 4 × 4 × 3 m room: black everywhere, or
 // with a grey floor (ρ 0.5) that sends half of it back to the emitter and the room.

@@ -49,14 +49,6 @@ std::string describe(const Result& r) {
            std::to_string(r.stats.seconds) + " s";
 }
 
-Scene furnace_cube(double rho) {
-    Scene scene;
-    scene.name = "furnace-cube";
-    scene.materials = {testing::gray("glow", rho, 1.0)};
-    scene.surfaces = {testing::box_surface("box", "glow", {0, 0, 0}, {1, 1, 1}, true)};
-    return scene;
-}
-
 /// A closed 4 × 4 × 3 m room lit by a ceiling panel and a point luminaire, with a tilted
 /// two-sided baffle over the work plane so that shadow rays are cast. Two-sided, so that every
 /// patch is enclosed: where a patch sees a black back face, the dense matrix completes each
@@ -78,7 +70,7 @@ Scene ceiling_room() {
 
 TEST(MatrixFreeShooting, FurnaceIsEOverOneMinusRho) {
     const double rho = 0.9;
-    const Result r = run(furnace_cube(rho), shooting(0.01), true);
+    const Result r = run(testing::furnace_cube(rho), shooting(0.01), true);
     ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
     EXPECT_EQ(r.stats.method, "shooting");
     EXPECT_GT(r.stats.iterations, 0u);
@@ -149,7 +141,7 @@ TEST(MatrixFreeShooting, StopsAtTheTimeLimitWithAnErrorBound) {
     // ρ = 0.999 needs far more shots than a second allows for a bound of 0.0025.
     SolveOptions options = shooting(0.01);
     options.max_seconds = 1.0;
-    const Result r = run(furnace_cube(0.999), options, true);
+    const Result r = run(testing::furnace_cube(0.999), options, true);
     ASSERT_TRUE(r.error.empty()) << r.error;
     EXPECT_EQ(r.status, SolveStatus::stopped) << describe(r);
     EXPECT_GT(r.stats.error_estimate, options.tolerance / 4);
@@ -208,7 +200,7 @@ TEST(MatrixFreeShooting, SnapshotsProgressAndMeshAsTheDensePath) {
 TEST(MatrixFreeShooting, CancellationStopsWithTheBestResultSoFar) {
     CancellationToken cancel;
     Recorder recorder(&cancel);
-    const Result r = run(furnace_cube(0.999), shooting(0.01), true, &recorder, &cancel);
+    const Result r = run(testing::furnace_cube(0.999), shooting(0.01), true, &recorder, &cancel);
     ASSERT_TRUE(r.error.empty()) << r.error;
     EXPECT_EQ(r.status, SolveStatus::stopped) << describe(r);
     EXPECT_GT(r.stats.iterations, 0u);

@@ -62,12 +62,12 @@ TEST_P(OccludedFurnace, EverySurfaceAtEOverOneMinusRho) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Cases, OccludedFurnace,
-    ::testing::Values(Case{"l_room_0_99", l_room, 0.99, 0.01}, Case{"l_room_0_999", l_room, 0.999, 0.02},
-                      Case{"block_0_99", floating_block, 0.99, 0.01},
-                      Case{"block_0_999", floating_block, 0.999, 0.02}),
-    [](const auto& param_info) { return std::string(param_info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Cases, OccludedFurnace,
+                         ::testing::Values(Case{"l_room_0_99", l_room, 0.99, 0.01},
+                                           Case{"l_room_0_999", l_room, 0.999, 0.02},
+                                           Case{"block_0_99", floating_block, 0.99, 0.01},
+                                           Case{"block_0_999", floating_block, 0.999, 0.02}),
+                         [](const auto& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace
 }  // namespace radiant
