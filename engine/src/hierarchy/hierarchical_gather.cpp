@@ -11,30 +11,13 @@
 #include "formfactor/point_polygon.h"
 #include "formfactor/quadrature.h"
 #include "formfactor/shadow_rays.h"
+#include "radiant/box.h"
 #include "solution/sensors.h"
 
 namespace radiant {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Distance from x to the box [lo, hi] (0 inside).
-double box_distance(const Vec3& x, const Vec3& lo, const Vec3& hi) {
-    double d2 = 0;
-    for (int a = 0; a < 3; ++a) {
-        const double d = std::max({lo[a] - x[a], 0.0, x[a] - hi[a]});
-        d2 += d * d;
-    }
-    return std::sqrt(d2);
-}
-
-bool box_behind(const Vec3& x, const Vec3& n, const Vec3& lo, const Vec3& hi) {
-    for (int k = 0; k < 8; ++k) {
-        const Vec3 c{(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z};
-        if (dot(c - x, n) > 0) return false;
-    }
-    return true;
-}
 
 class PointGather {
 public:
@@ -49,13 +32,14 @@ public:
             const int index = stack.back();
             stack.pop_back();
             const Element& e = tree_[static_cast<std::size_t>(index)];
-            if (box_behind(x, n, e.lo, e.hi)) continue;
+            const Box box{e.lo, e.hi};
+            if (behind(box, x, n)) continue;
             if (!e.cluster && dot(x - e.polygon[0], e.normal) <= 0) continue;
             double factor = 0;
             if (e.leaf()) {
                 factor = surface_factor(x, n, e, index, key, true, rays);
             } else {
-                const double d = box_distance(x, e.lo, e.hi);
+                const double d = distance(box, Box{x, x});
                 const double bound = d > 0 ? std::min(1.0, e.area_m2 / (kPi * d * d)) : 1.0;
                 if (bound * e.radiosity_max > criteria_.irradiance_epsilon) {
                     for (const int c : e.children) stack.push_back(c);

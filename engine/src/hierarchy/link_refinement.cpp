@@ -13,6 +13,7 @@
 #include "formfactor/quadrature.h"
 #include "formfactor/shadow_rays.h"
 #include "geometry/random.h"
+#include "radiant/box.h"
 #include "solution/surface_summary.h"
 
 namespace radiant {
@@ -142,12 +143,7 @@ private:
     }
 
     static double box_distance(const Element& r, const Element& s) {
-        double d2 = 0;
-        for (int a = 0; a < 3; ++a) {
-            const double d = std::max({s.lo[a] - r.hi[a], 0.0, r.lo[a] - s.hi[a]});
-            d2 += d * d;
-        }
-        return std::sqrt(d2);
+        return distance(Box{r.lo, r.hi}, Box{s.lo, s.hi});
     }
 
     // Upper bound of the factor from any point of r to all of s: A_s / (π d²), d the distance
@@ -173,21 +169,14 @@ private:
         const Element* other = surface == &r ? &s : &r;
         if (!surface) return true;
         // Some corner of the other's box must lie in front of the surface.
-        for (int k = 0; k < 8; ++k) {
-            const Vec3 c{(k & 1) ? other->hi.x : other->lo.x, (k & 2) ? other->hi.y : other->lo.y,
-                         (k & 4) ? other->hi.z : other->lo.z};
-            if (dot(c - surface->polygon[0], surface->normal) > 0) return true;
-        }
-        return false;
+        return !behind(Box{other->lo, other->hi}, surface->polygon[0], surface->normal);
     }
 
-    // HSA91: split the element that looks bigger from the other; area is a fair proxy. Clusters
-    // only send: a cluster receiving as a whole would hand light to parts of it that are hidden.
+    // HSA91: split the element that looks bigger from the other; a cluster source opens first.
+    // Receivers are surfaces here: judge() opens receiving clusters before it gets this far.
     static Decision choose_split(const Element& r, const Element& s, bool split_r, bool split_s) {
-        if (r.cluster) return Decision::split_receiver;
         if (split_r && split_s) {
-            if (r.cluster != s.cluster)
-                return r.cluster ? Decision::split_receiver : Decision::split_source;
+            if (s.cluster) return Decision::split_source;
             return r.diameter_m >= s.diameter_m ? Decision::split_receiver : Decision::split_source;
         }
         if (split_r) return Decision::split_receiver;
