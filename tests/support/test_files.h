@@ -29,12 +29,12 @@ inline std::vector<std::filesystem::path> json_files(const std::filesystem::path
 }
 
 /// Every scene that must be accepted: tests/data/good, the examples (with the furnished office
-/// and its model and photometric files) and the validation scenes.
+/// and its model and photometric files), the validation scenes and the box rooms.
 inline std::vector<std::filesystem::path> good_scenes() {
     const std::filesystem::path data = RADIANT_TEST_DATA;
     std::vector<std::filesystem::path> files = json_files(data / "good");
-    for (const auto& dir :
-         {std::filesystem::path(RADIANT_SOURCE_DIR) / "proto/examples", data / "scenes"}) {
+    for (const auto& dir : {std::filesystem::path(RADIANT_SOURCE_DIR) / "proto/examples",
+                            data / "scenes", data / "box_rooms"}) {
         const auto more = json_files(dir);
         files.insert(files.end(), more.begin(), more.end());
     }
