@@ -202,7 +202,8 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
                  channels, stopped);
-    publish_final(mesh, kLeafMeshVersion, result);
+    final_mesh_ = mesh;
+    final_mesh_version_ = kLeafMeshVersion;
     return result;
 }
 

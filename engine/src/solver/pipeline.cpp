@@ -13,6 +13,7 @@
 #include "formfactor/transport.h"
 #include "meshing/patch_mesh.h"
 #include "solution/gouraud.h"
+#include "solution/result_difference.h"
 #include "solution/sensors.h"
 #include "solution/surface_summary.h"
 #include "solver/shooting_solver.h"
@@ -32,6 +33,13 @@ constexpr std::size_t kMaxMatrixFreePatches = 1'000'000;
 constexpr std::size_t kMaxAutoDensePolygons = 12;
 // LU (O(n³)) beats iteration up to about here on two cores, at any reflectance.
 constexpr std::size_t kMaxAutoDirectPatches = 1500;
+// The discretisation check solves again at this many times the tolerance (patches twice as
+// large), at most at kMaxCheckTolerance, and not at all if that is less than kMinCheckRatio
+// times the tolerance; its difference counts kCheckMargin times (see check_discretisation).
+constexpr double kCheckCoarsening = 4;
+constexpr double kMaxCheckTolerance = 0.5;
+constexpr double kMinCheckRatio = 1.5;
+constexpr double kCheckMargin = 3;
 
 // All pieces as triangle fans, and the piece of each triangle.
 std::pair<std::vector<Triangle>, std::vector<int>> occluder_triangles(const PreparedScene& scene) {
@@ -82,16 +90,55 @@ void Pipeline::report(const std::string& stage, double fraction, std::size_t ite
     observer_->on_progress(p);
 }
 
-void Pipeline::publish_final(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
-                             const Result& result) {
-    if (!observer_) return;
+void Pipeline::publish_final(const Result& result) {
+    if (!observer_ || !final_mesh_) return;
     Progress progress = last_progress_;
     progress.error_estimate = result.stats.error_estimate;
-    snapshots_.finish(std::move(mesh), mesh_version,
+    snapshots_.finish(final_mesh_, final_mesh_version_,
                       std::make_shared<const std::vector<SensorResult>>(result.sensors), progress);
 }
 
+void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::string& method,
+                                    Result& result) {
+    const double coarse_tolerance =
+        std::min(kCheckCoarsening * options_.tolerance, kMaxCheckTolerance);
+    const double ratio = coarse_tolerance / options_.tolerance;
+    if (!(ratio >= kMinCheckRatio)) return;
+    report("checking", 0.95, result.stats.iterations, result.stats.error_estimate,
+           result.stats.unshot_fraction);
+    SolveOptions coarse = options_;
+    coarse.tolerance = coarse_tolerance;
+    coarse.want_mesh = false;
+    bool finished = !should_stop();
+    if (deadline_)
+        coarse.max_seconds = std::chrono::duration<double>(*deadline_ - Clock::now()).count();
+    double estimate = result.stats.error_estimate;
+    if (finished) {
+        Pipeline check(scene_, coarse, nullptr, cancel_, limits_);
+        // Its linear system is solved as far as this one's, so that the difference is the
+        // mesh's, not the iteration's.
+        check.system_tolerance_scale_ = options_.tolerance / coarse_tolerance;
+        const Result c = method == "hierarchical" ? check.run_hierarchical(prepared)
+                                                  : check.run_dense(prepared, method, false);
+        rays_ += check.rays_;
+        finished = c.status == SolveStatus::converged;
+        // Errors shrink about in proportion to the tolerance (the dense path's O(h²) with
+        // h ∝ √tolerance): the fine solution's error is about the difference / (ratio − 1).
+        // Reported with a margin of kCheckMargin, since convergence is slower where the
+        // solution is not smooth.
+        if (finished) {
+            estimate = std::max(
+                estimate, kCheckMargin * largest_relative_difference(result, c) / (ratio - 1));
+        }
+    }
+    result.stats.error_estimate = estimate;
+    result.stats.rays = rays_;
+    result.stats.seconds = elapsed();
+    if (!finished) result.status = SolveStatus::stopped;
+}
+
 SolverControl Pipeline::solving_control(double tolerance) const {
+    tolerance *= system_tolerance_scale_;
     SolverControl control;
     control.tolerance = tolerance;
     control.deadline = deadline_;
@@ -156,6 +203,11 @@ Result Pipeline::run() {
                                                prepared.triangle_piece, options_.seed);
     Result solved = method == "hierarchical" ? run_hierarchical(prepared)
                                              : run_dense(prepared, method, matrix_free);
+    // Matrix-free shooting is for models too large to solve twice.
+    if (solved.status == SolveStatus::converged && !matrix_free) {
+        check_discretisation(prepared, method, solved);
+    }
+    publish_final(solved);
     report("done", 1.0, solved.stats.iterations, solved.stats.error_estimate,
            solved.stats.unshot_fraction);
     return solved;
@@ -323,7 +375,8 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, std::string(solver ? solver->name() : method), n, outcome.iterations,
                  outcome.error_estimate, outcome.unshot_fraction, channels, stopped);
-    publish_final(mesh, 1, result);
+    final_mesh_ = mesh;
+    final_mesh_version_ = 1;
     return result;
 }
 

@@ -56,9 +56,15 @@ private:
         return (cancel_ && cancel_->cancelled()) || (deadline_ && Clock::now() >= *deadline_);
     }
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-    /// Publishes the result's mesh and sensors as the final snapshot, with its error estimate.
-    void publish_final(std::shared_ptr<const SolvedMesh> mesh, std::uint64_t mesh_version,
-                       const Result& result);
+    /// Adds the discretisation error to a converged result's estimate: Richardson's estimate
+    /// from the same method at a coarser tolerance (see pipeline.cpp). The status stays: it says
+    /// whether the solver met its tolerance on its mesh; a check that could not finish (time
+    /// limit, cancelled) makes the result `stopped`.
+    void check_discretisation(const PreparedSolve& prepared, const std::string& method,
+                              Result& result);
+    /// Publishes the final mesh (`final_mesh_`) and the result's sensors as the final snapshot,
+    /// with the result's error estimate.
+    void publish_final(const Result& result);
     /// Control for the solving stage: `tolerance`, the deadline, cancellation, progress reports
     /// and the snapshot interval of the options.
     SolverControl solving_control(double tolerance) const;
@@ -79,6 +85,11 @@ private:
     /// Mutable like last_progress_: report() is const and hands it every progress.
     mutable SnapshotPublisher snapshots_;
     std::size_t elements_ = 0, links_ = 0;
+    /// Scales the tolerance of the linear system (the discretisation check's coarse solve).
+    double system_tolerance_scale_ = 1;
+    /// The solved mesh of the result, as each path leaves it for publish_final.
+    std::shared_ptr<const SolvedMesh> final_mesh_;
+    std::uint64_t final_mesh_version_ = 0;
 };
 
 }  // namespace radiant

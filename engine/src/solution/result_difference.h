@@ -1,0 +1,15 @@
+// How far apart two solutions of the same scene are, in the quantities a user reads: the
+// surfaces' mean irradiance and radiosity and every sensor value.
+#pragma once
+
+#include "radiant/result.h"
+
+namespace radiant {
+
+/// The largest relative difference between `a` and `b` (solutions of one scene, so their
+/// surfaces and sensors correspond by index). A value is measured against itself in `a`, or
+/// against a tenth of the mean of its kind where it is darker, so that a sealed dark room does
+/// not count as all error.
+double largest_relative_difference(const Result& a, const Result& b);
+
+}  // namespace radiant

@@ -1,0 +1,46 @@
+// largest_relative_difference: the measure behind the discretisation part of the error estimate.
+#include <gtest/gtest.h>
+
+#include "solution/result_difference.h"
+
+namespace radiant {
+namespace {
+
+Result two_surfaces(double bright, double dark) {
+    Result r;
+    r.surfaces.push_back({"bright", 1.0, bright, 0.5 * bright});
+    r.surfaces.push_back({"dark", 1.0, dark, 0.5 * dark});
+    return r;
+}
+
+TEST(ResultDifference, IdenticalResultsDoNotDiffer) {
+    const Result a = two_surfaces(100, 50);
+    EXPECT_EQ(largest_relative_difference(a, a), 0.0);
+}
+
+TEST(ResultDifference, LargestRelativeSurfaceDifference) {
+    // 2 % on the bright surface, 4 % on the dark one (which is not darker than a tenth).
+    EXPECT_NEAR(largest_relative_difference(two_surfaces(100, 50), two_surfaces(102, 52)), 0.04,
+                1e-12);
+}
+
+TEST(ResultDifference, DarkValuesAreMeasuredAgainstATenthOfTheMean) {
+    // Mean irradiance (100 + 0.001) / 2; the dark surface's 0.001 lux change counts against a
+    // tenth of it, not against its own 0.001 lux.
+    const double d =
+        largest_relative_difference(two_surfaces(100, 0.001), two_surfaces(100, 0.002));
+    EXPECT_NEAR(d, 0.001 / (0.1 * 100.001 / 2), 1e-12);
+}
+
+TEST(ResultDifference, SensorsCountPointByPoint) {
+    Result a = two_surfaces(100, 100), b = a;
+    SensorResult desk;
+    desk.illuminance = {200, 400};
+    a.sensors.push_back(desk);
+    desk.illuminance = {200, 412};
+    b.sensors.push_back(desk);
+    EXPECT_NEAR(largest_relative_difference(a, b), 12.0 / 400, 1e-12);
+}
+
+}  // namespace
+}  // namespace radiant
