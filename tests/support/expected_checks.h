@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +23,21 @@ namespace radiant::testing {
 inline nlohmann::json read_json(const std::filesystem::path& path) {
     std::ifstream in(path);
     return nlohmann::json::parse(in);
+}
+
+/// The scene names of an expected-values file, in its order: the parameters of a test per scene.
+inline std::vector<std::string> scene_names(const nlohmann::json& all) {
+    std::vector<std::string> names;
+    for (auto it = all.cbegin(); it != all.cend(); ++it) names.push_back(it.key());
+    return names;
+}
+
+/// A scene name as a test name: every character but letters and digits becomes '_'.
+inline std::string test_name(std::string name) {
+    for (char& c : name) {
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    }
+    return name;
 }
 
 /// Relative error of a `surface` or `energy` check; nullopt for other kinds or a missing surface.

@@ -3,7 +3,6 @@
 // includes the mesh's error, must bound its true error against them.
 #include <gtest/gtest.h>
 
-#include <cctype>
 #include <string>
 #include <vector>
 
@@ -34,20 +33,9 @@ TEST_P(BoxRoom, DirectEstimateBoundsTheError) {
     EXPECT_GE(result.stats.error_estimate, largest) << name;
 }
 
-std::vector<std::string> room_names() {
-    const nlohmann::json all = expected();
-    std::vector<std::string> names;
-    for (auto it = all.cbegin(); it != all.cend(); ++it) names.push_back(it.key());
-    return names;
-}
-
-INSTANTIATE_TEST_SUITE_P(Reference, BoxRoom, ::testing::ValuesIn(room_names()),
+INSTANTIATE_TEST_SUITE_P(Reference, BoxRoom, ::testing::ValuesIn(testing::scene_names(expected())),
                          [](const auto& param_info) {
-                             std::string s = param_info.param;
-                             for (char& c : s) {
-                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             }
-                             return s;
+                             return testing::test_name(param_info.param);
                          });
 
 }  // namespace

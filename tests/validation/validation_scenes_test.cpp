@@ -3,7 +3,6 @@
 // and with `method: hierarchical` forced, since every accuracy bar must hold with it too.
 #include <gtest/gtest.h>
 
-#include <cctype>
 #include <string>
 #include <vector>
 
@@ -42,20 +41,10 @@ TEST_P(ValidationScene, MatchesExpected) { expect_matches(GetParam(), "auto"); }
 
 TEST_P(ValidationScene, MatchesExpectedHierarchical) { expect_matches(GetParam(), "hierarchical"); }
 
-std::vector<std::string> scene_names() {
-    const nlohmann::json all = expected();
-    std::vector<std::string> names;
-    for (auto it = all.cbegin(); it != all.cend(); ++it) names.push_back(it.key());
-    return names;
-}
-
-INSTANTIATE_TEST_SUITE_P(Shared, ValidationScene, ::testing::ValuesIn(scene_names()),
+INSTANTIATE_TEST_SUITE_P(Shared, ValidationScene,
+                         ::testing::ValuesIn(testing::scene_names(expected())),
                          [](const auto& param_info) {
-                             std::string s = param_info.param;
-                             for (char& c : s) {
-                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             }
-                             return s;
+                             return testing::test_name(param_info.param);
                          });
 
 }  // namespace
