@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "formfactor/luminaire_light.h"
+#include "formfactor/point_polygon.h"
 #include "formfactor/quadrature.h"
 #include "formfactor/receiver_rule.h"
 #include "geometry/random.h"
@@ -21,6 +22,9 @@ namespace {
 constexpr int kClusterSamples = 8;
 // Deeper quadtrees than this only chase rounding.
 constexpr int kMaxDepth = 14;
+// The estimates add emitting root patches' direct light (unoccluded) only up to this many of
+// them: it costs that many factors per element.
+constexpr std::size_t kMaxEstimateEmitters = 64;
 
 }  // namespace
 
@@ -49,6 +53,10 @@ ElementTree::ElementTree(const PreparedScene& scene, const PatchMesh& patches,
         roots.push_back(add_surface(p.vertices, p.normal, static_cast<int>(i), -1, 0));
     }
     if (roots.empty()) return;
+    for (const int r : roots) {
+        if (elements_[static_cast<std::size_t>(r)].emits) emitters_.push_back(r);
+    }
+    if (emitters_.size() > kMaxEstimateEmitters) emitters_.clear();
     top_ = build_clusters(roots, 0, roots.size());
 }
 
@@ -171,6 +179,7 @@ void ElementTree::subdivide(int e) {
         Element& child = elements_[static_cast<std::size_t>(c)];
         child.radiosity = parent.radiosity;
         child.radiosity_max = parent.radiosity_max;
+        child.radiosity_min = parent.radiosity_min;
         children.push_back(c);
     }
     footprint_ += children.capacity() * sizeof(int);
@@ -194,41 +203,98 @@ std::uint64_t ElementTree::light_from(std::size_t first) {
     return rays.combine(std::plus<>());
 }
 
-void ElementTree::estimate_from(std::size_t first, double ambient_irradiance, int channels) {
-    for (std::size_t i = first; i < elements_.size(); ++i) {
-        Element& e = elements_[i];
-        if (e.cluster) continue;
-        for (int c = 0; c < 3; ++c) {
-            e.radiosity[c] =
-                e.exitance[c] + e.reflectance[c] * (e.luminaire_irradiance[c] + ambient_irradiance);
-        }
-        e.radiosity_max = photometric(e.radiosity, channels);
+// Direct light from the emitting root patches at a point, unoccluded.
+Rgb ElementTree::emitter_light_at(const Vec3& x, const Vec3& n, int patch) const {
+    Rgb h{0, 0, 0};
+    for (const int k : emitters_) {
+        const Element& s = elements_[static_cast<std::size_t>(k)];
+        if (s.patch == patch) continue;
+        const double f = std::max(0.0, front_point_to_polygon_factor(x, n, s.polygon, s.normal));
+        for (int c = 0; c < 3; ++c) h[c] += f * s.exitance[c];
     }
-    if (first == 0) pull_up(channels);
+    return h;
+}
+
+// Direct light from the luminaires at a point, unoccluded.
+Rgb ElementTree::luminaire_light_at(const Vec3& x, const Vec3& n) const {
+    Rgb h{0, 0, 0};
+    for (const PreparedLuminaire& l : scene_.luminaires) {
+        const Vec3 d = l.position - x;
+        const double d2 = length_squared(d);
+        const double cosine = d2 > 0 ? dot(n, d) / std::sqrt(d2) : 0;
+        if (!(cosine > 0)) continue;
+        const double k = intensity_per_lm(l, -d / std::sqrt(d2)) * cosine / d2;
+        for (int c = 0; c < 3; ++c) h[c] += k * l.flux_lm[c];
+    }
+    return h;
+}
+
+// The estimate of a leaf: its emission plus the reflected luminaire light, emitters' direct
+// light and the ambient guess. Its range over the leaf's points bounds how far the leaf's
+// radiosity strays from its mean where the direct light falls off across it, which the linking
+// oracle needs before the leaf is ever split (see link_refinement).
+void ElementTree::estimate_from(std::size_t first, double ambient_irradiance, int channels) {
+    tbb::parallel_for(first, elements_.size(), [&](std::size_t i) {
+        Element& e = elements_[i];
+        if (e.cluster) return;
+        const bool lit = photometric(e.luminaire_irradiance, channels) > 0;
+        auto radiosity = [&](const Rgb& direct) {
+            Rgb b;
+            for (int c = 0; c < 3; ++c)
+                b[c] = e.exitance[c] + e.reflectance[c] * (direct[c] + ambient_irradiance);
+            return b;
+        };
+        Rgb emitted{0, 0, 0};
+        double lo = 1e300, hi = 0, weights = 0;
+        for (const SamplePoint& x : e.samples) {
+            const Rgb g = emitter_light_at(x.position, e.normal, e.patch);
+            Rgb direct = g;
+            if (lit) {
+                const Rgb l = luminaire_light_at(x.position, e.normal);
+                for (int c = 0; c < 3; ++c) direct[c] += l[c];
+            }
+            const double b = photometric(radiosity(direct), channels);
+            lo = std::min(lo, b);
+            hi = std::max(hi, b);
+            for (int c = 0; c < 3; ++c) emitted[c] += x.weight * g[c];
+            weights += x.weight;
+        }
+        // The luminaires' light is the exact (and shadowed) area average.
+        Rgb direct = e.luminaire_irradiance;
+        for (int c = 0; c < 3; ++c) direct[c] += weights > 0 ? emitted[c] / weights : 0;
+        e.radiosity = radiosity(direct);
+        const double b = photometric(e.radiosity, channels);
+        e.radiosity_max = std::max(b, weights > 0 ? hi : b);
+        e.radiosity_min = std::min(b, weights > 0 ? lo : b);
+    });
+    if (first == 0 && top_ >= 0) pull(top_, channels, true);
 }
 
 void ElementTree::pull_up(int channels) {
-    if (top_ >= 0) pull(top_, channels);
+    if (top_ >= 0) pull(top_, channels, false);
 }
 
-void ElementTree::pull(int e, int channels) {
+void ElementTree::pull(int e, int channels, bool keep_leaf_range) {
     Element& x = elements_[static_cast<std::size_t>(e)];
     if (x.children.empty()) {
-        x.radiosity_max = photometric(x.radiosity, channels);
+        if (!keep_leaf_range)
+            x.radiosity_max = x.radiosity_min = photometric(x.radiosity, channels);
         return;
     }
     Rgb sum{0, 0, 0};
-    double area = 0, most = 0;
+    double area = 0, most = 0, least = 1e300;
     for (const int c : x.children) {
-        pull(c, channels);
+        pull(c, channels, keep_leaf_range);
         const Element& y = elements_[static_cast<std::size_t>(c)];
         for (int k = 0; k < 3; ++k) sum[k] += y.area_m2 * y.radiosity[k];
         area += y.area_m2;
         most = std::max(most, y.radiosity_max);
+        least = std::min(least, y.radiosity_min);
     }
     Element& z = elements_[static_cast<std::size_t>(e)];
     for (int k = 0; k < 3; ++k) z.radiosity[k] = area > 0 ? sum[k] / area : 0;
     z.radiosity_max = most;
+    z.radiosity_min = least;
 }
 
 std::size_t ElementTree::leaf_count() const {

@@ -46,6 +46,7 @@ struct Element {
     Rgb gathered{0, 0, 0};              ///< irradiance through this element's own links
     double link_factor_sum = 0;         ///< Σ K over this element's own links
     double radiosity_max = 0;           ///< largest photometric radiosity of any leaf below
+    double radiosity_min = 0;           ///< smallest photometric radiosity of any leaf below
     bool leaf() const { return children.empty(); }
 };
 
@@ -70,7 +71,8 @@ public:
     std::uint64_t light_from(std::size_t first);
 
     /// First guess of the radiosity of the leaves from `first` on, for the linking oracle:
-    /// emission plus reflected luminaire light and an ambient irradiance; updates the maxima.
+    /// emission plus reflected direct light (luminaires, and emitting patches unoccluded) and an
+    /// ambient irradiance; a leaf's maximum and minimum span the guess over its points.
     void estimate_from(std::size_t first, double ambient_irradiance, int channels);
 
     /// Area-weighted radiosity of interior nodes and the per-node maximum, from the leaves.
@@ -89,7 +91,9 @@ private:
                     int depth);
     int build_clusters(std::vector<int>& items, std::size_t begin, std::size_t end);
     void light_from_luminaires(Element& e, std::uint64_t& rays) const;
-    void pull(int e, int channels);
+    void pull(int e, int channels, bool keep_leaf_range);
+    Rgb emitter_light_at(const Vec3& x, const Vec3& n, int patch) const;
+    Rgb luminaire_light_at(const Vec3& x, const Vec3& n) const;
     void fill_bounds(Element& e) const;
 
     const PreparedScene& scene_;
@@ -98,6 +102,7 @@ private:
     double min_edge_m_;
     std::uint64_t seed_;
     std::vector<Element> elements_;
+    std::vector<int> emitters_;  // root elements that emit, for the estimates' direct light
     std::size_t footprint_ = 0;  // Σ over elements of what each holds
     int top_ = -1;
 };

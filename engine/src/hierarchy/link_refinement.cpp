@@ -66,7 +66,13 @@ public:
         // emitter would get what its sample points on the rest of the floor see, and a
         // surface facing away what its neighbour facing the source gets.
         if (r.cluster) return {Decision::split_receiver, {}};
-        const double power_per_factor = r.area_m2 * s.radiosity_max;
+        // A closed receiver's irradiance is its gathered light divided by its factor sum (see
+        // HierarchicalSystem), so an error δ in a factor moves it by δ·(source − the receiver's
+        // mean incoming radiosity), not δ·source: a dim source beside a lit receiver still
+        // counts, with the scene's mean radiosity standing in for that mean.
+        const double power_per_factor =
+            r.area_m2 *
+            (closed(r) ? std::max(s.radiosity_max, criteria_.mean_radiosity) : s.radiosity_max);
         const double limit = criteria_.power_epsilon_lm;
         const bool split_r = tree_.can_subdivide(p.receiver) && (may_split || !r.leaf());
         const bool split_s = tree_.can_subdivide(p.source) && (may_split || !s.leaf());
@@ -95,6 +101,8 @@ public:
         if (open.factor <= 0) return {};
         const double open_error = power_per_factor * (clusters ? open.factor : open.spread);
         if (open_error > limit && split != Decision::link) return {split, {}};
+        // The receiver-side spread cannot see a source whose light varies over it: split that.
+        if (!clusters && split_s && source_error(r, s) > limit) return {Decision::split_source, {}};
 
         const KernelSamples seen = kernel(r, s, p, true, rays);
         if (seen.factor <= 0) return {};
@@ -114,6 +122,25 @@ public:
     }
 
 private:
+    // The link hands the receiver the source's mean radiosity; where the source's radiosity and
+    // the factor from its points to the receiver both vary over it (the floor under a panel, seen
+    // from the panel), their covariance is light the link misplaces: bounded by the source's area
+    // × its radiosity range × the factor's spread over its points (unoccluded).
+    double source_error(const Element& r, const Element& s) const {
+        const double range = s.radiosity_max - s.radiosity_min;
+        if (!(range > 0)) return 0;
+        double lo = 1e300, hi = 0;
+        auto at = [&](const Vec3& y) {
+            const double g =
+                std::max(0.0, front_point_to_polygon_factor(y, s.normal, r.polygon, r.normal));
+            lo = std::min(lo, g);
+            hi = std::max(hi, g);
+        };
+        for (const SamplePoint& y : s.samples) at(y.position);
+        at(polygon_centroid(s.polygon));
+        return s.area_m2 * range * (hi - lo);
+    }
+
     // The link's factor between two surface elements: the mean of the kernel over the
     // receiver's points, with their visibility. Where the source is near-singular for the
     // receiver — nearer than its points are to each other, but not touching (adjacent

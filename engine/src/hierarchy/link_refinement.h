@@ -3,7 +3,8 @@
 // linked when the light it carries is known well enough, otherwise the larger one is split and
 // its children are tried. The oracle works in power: the spread of the kernel over the
 // receiver's points (and partial visibility) times the source's radiosity times the receiver's
-// area, against a fraction of the scene's emitted power.
+// area, and the spread of the kernel over the source's points times the range of its radiosity
+// times its area, against a fraction of the scene's emitted power.
 #pragma once
 
 #include <cstdint>
@@ -49,7 +50,8 @@ struct RefinementOutcome {
 };
 
 /// Links every pair of elements that exchange light. Splits elements of `tree` as it goes
-/// (and lights the new ones); uses `radiosity_max` of the elements as the source estimate.
+/// (and lights the new ones); uses `radiosity_max` and `radiosity_min` of the elements as the
+/// source estimate.
 /// Once the tree and links would outgrow `max_bytes`, pairs link where they stand instead.
 /// Parallel over candidate pairs; deterministic for any thread count.
 RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
