@@ -235,8 +235,7 @@ void print_estimate_misses(std::ostream& out, const std::vector<BenchRow>& rows)
         if (r.max_error > r.error_estimate) misses.push_back(&r);
     }
     out << "\nError estimate against the largest error: " << misses.size() << " of " << checked
-        << " converged rows have a larger error than their estimate (the estimate bounds the "
-           "discrete system's error; the rest is the mesh's)\n";
+        << " converged rows have a larger error than their estimate\n";
     for (const BenchRow* r : misses) {
         out << "- " << r->scene << " " << r->method << " " << sci(r->tolerance) << ": max error "
             << sci(r->max_error) << ", estimate " << sci(r->error_estimate) << '\n';

@@ -32,6 +32,15 @@ TEST(ResultDifference, DarkValuesAreMeasuredAgainstATenthOfTheMean) {
     EXPECT_NEAR(d, 0.001 / (0.1 * 100.001 / 2), 1e-12);
 }
 
+TEST(ResultDifference, SurfacesUnderOnePercentOfTheAreaDoNotCount) {
+    Result a = two_surfaces(100, 100), b = a;
+    a.surfaces.push_back({"chair leg", 0.01, 100, 50});
+    b.surfaces.push_back({"chair leg", 0.01, 150, 75});
+    EXPECT_EQ(largest_relative_difference(a, b), 0.0);
+    a.surfaces.back().area_m2 = b.surfaces.back().area_m2 = 0.1;
+    EXPECT_NEAR(largest_relative_difference(a, b), 0.5, 1e-12);
+}
+
 TEST(ResultDifference, SensorsCountPointByPoint) {
     Result a = two_surfaces(100, 100), b = a;
     SensorResult desk;

@@ -8,6 +8,9 @@ namespace {
 
 // Values darker than this share of their kind's mean are measured against that share.
 constexpr double kDarkShare = 0.1;
+// Surfaces smaller than this share of the total area do not count: a chair leg's mean is not
+// what the error bar is about, and the hierarchy refines by power, not by surface.
+constexpr double kSmallSurfaceShare = 0.01;
 
 double relative(double a, double b, double dark) {
     const double scale = std::max(std::abs(a), dark);
@@ -30,6 +33,7 @@ double largest_relative_difference(const Result& a, const Result& b) {
         for (std::size_t i = 0; i < a.surfaces.size(); ++i) {
             const SurfaceResult& x = a.surfaces[i];
             const SurfaceResult& y = b.surfaces[i];
+            if (x.area_m2 < kSmallSurfaceShare * area) continue;
             worst = std::max({worst,
                               relative(x.average_irradiance, y.average_irradiance, dark_irradiance),
                               relative(x.average_radiosity, y.average_radiosity, dark_radiosity)});

@@ -7,9 +7,10 @@
 namespace radiant {
 
 /// The largest relative difference between `a` and `b` (solutions of one scene, so their
-/// surfaces and sensors correspond by index). A value is measured against itself in `a`, or
-/// against a tenth of the mean of its kind where it is darker, so that a sealed dark room does
-/// not count as all error.
+/// surfaces and sensors correspond by index), over every sensor value and the means of the
+/// surfaces that make up at least 1 % of the scene's area. A value is measured against itself
+/// in `a`, or against a tenth of the mean of its kind where it is darker, so that a sealed dark
+/// room does not count as all error.
 double largest_relative_difference(const Result& a, const Result& b);
 
 }  // namespace radiant
