@@ -75,22 +75,35 @@ double flux_fraction_on(const PreparedLuminaire& l, std::span<const Vec3> polygo
     return sum;
 }
 
+double direct_kernel_per_lm(const PreparedLuminaire& l, const Vec3& x, const Vec3& n) {
+    const Vec3 d = l.position - x;
+    const double d2 = length_squared(d);
+    if (!(d2 > 0)) return 0;
+    const double r = std::sqrt(d2);
+    const double cos_r = dot(n, d) / r;
+    if (cos_r <= 0) return 0;
+    return std::max(0.0, intensity_per_lm(l, -d / r)) * cos_r / d2;
+}
+
+Rgb unoccluded_luminaire_irradiance_at(const PreparedScene& scene, const Vec3& x, const Vec3& n) {
+    Rgb e{0, 0, 0};
+    for (const PreparedLuminaire& l : scene.luminaires) {
+        const double k = direct_kernel_per_lm(l, x, n);
+        for (int c = 0; c < 3; ++c) e[c] += l.flux_lm[c] * k;
+    }
+    return e;
+}
+
 Rgb luminaire_irradiance_at(const PreparedScene& scene, const Visibility& visibility, const Vec3& x,
                             const Vec3& n, std::uint64_t& rays) {
     Rgb e{0, 0, 0};
     const double eps = visibility.epsilon();
     for (const PreparedLuminaire& l : scene.luminaires) {
-        const Vec3 d = l.position - x;
-        const double d2 = length_squared(d);
-        if (!(d2 > 0)) continue;
-        const double r = std::sqrt(d2);
-        const double cos_r = dot(n, d) / r;
-        if (cos_r <= 0) continue;
-        const double i_per_lm = intensity_per_lm(l, -d / r);
-        if (i_per_lm <= 0) continue;
+        const double k = direct_kernel_per_lm(l, x, n);
+        if (k <= 0) continue;
         ++rays;
         if (!visibility.visible(x + n * eps, l.position)) continue;
-        for (int c = 0; c < 3; ++c) e[c] += l.flux_lm[c] * i_per_lm * cos_r / d2;
+        for (int c = 0; c < 3; ++c) e[c] += l.flux_lm[c] * k;
     }
     return e;
 }
@@ -111,11 +124,7 @@ Rgb luminaire_irradiance_on_polygon(
             // Weight each point by its share of the direct kernel I·cos/d².
             double seen = 0, total = 0;
             for (const QuadraturePoint& q : points) {
-                const Vec3 d = l.position - q.position;
-                const double d2 = length_squared(d);
-                if (!(d2 > 0)) continue;
-                const double k = q.weight * intensity_per_lm(l, -d / std::sqrt(d2)) *
-                                 std::max(0.0, dot(n, d)) / (d2 * std::sqrt(d2));
+                const double k = q.weight * direct_kernel_per_lm(l, q.position, n);
                 if (k <= 0) continue;
                 total += k;
                 ++rays;

@@ -20,6 +20,13 @@ double intensity_per_lm(const PreparedLuminaire& luminaire, const Vec3& u);
 /// the polygon's solid angle on spherical triangles of at most a few degrees.
 double flux_fraction_on(const PreparedLuminaire& luminaire, std::span<const Vec3> polygon);
 
+/// Direct irradiance at point x (unit normal n) per lumen of the luminaire's flux, unoccluded:
+/// I(toward x)/lm · cos / d²; 0 where the luminaire is behind x or at it.
+double direct_kernel_per_lm(const PreparedLuminaire& luminaire, const Vec3& x, const Vec3& n);
+
+/// Irradiance (lux, per channel) from every luminaire at point x with unit normal n, unoccluded.
+Rgb unoccluded_luminaire_irradiance_at(const PreparedScene& scene, const Vec3& x, const Vec3& n);
+
 /// Irradiance (lux, per channel) from every luminaire at point x with unit normal n, with one
 /// shadow ray per luminaire in front of x. Counts rays into `rays`.
 Rgb luminaire_irradiance_at(const PreparedScene& scene, const Visibility& visibility, const Vec3& x,

@@ -215,20 +215,6 @@ Rgb ElementTree::emitter_light_at(const Vec3& x, const Vec3& n, int patch) const
     return h;
 }
 
-// Direct light from the luminaires at a point, unoccluded.
-Rgb ElementTree::luminaire_light_at(const Vec3& x, const Vec3& n) const {
-    Rgb h{0, 0, 0};
-    for (const PreparedLuminaire& l : scene_.luminaires) {
-        const Vec3 d = l.position - x;
-        const double d2 = length_squared(d);
-        const double cosine = d2 > 0 ? dot(n, d) / std::sqrt(d2) : 0;
-        if (!(cosine > 0)) continue;
-        const double k = intensity_per_lm(l, -d / std::sqrt(d2)) * cosine / d2;
-        for (int c = 0; c < 3; ++c) h[c] += k * l.flux_lm[c];
-    }
-    return h;
-}
-
 // The estimate of a leaf: its emission plus the reflected luminaire light, emitters' direct
 // light and the ambient guess. Its range over the leaf's points bounds how far the leaf's
 // radiosity strays from its mean where the direct light falls off across it, which the linking
@@ -250,7 +236,7 @@ void ElementTree::estimate_from(std::size_t first, double ambient_irradiance, in
             const Rgb g = emitter_light_at(x.position, e.normal, e.patch);
             Rgb direct = g;
             if (lit) {
-                const Rgb l = luminaire_light_at(x.position, e.normal);
+                const Rgb l = unoccluded_luminaire_irradiance_at(scene_, x.position, e.normal);
                 for (int c = 0; c < 3; ++c) direct[c] += l[c];
             }
             const double b = photometric(radiosity(direct), channels);

@@ -93,7 +93,6 @@ private:
     void light_from_luminaires(Element& e, std::uint64_t& rays) const;
     void pull(int e, int channels, bool keep_leaf_range);
     Rgb emitter_light_at(const Vec3& x, const Vec3& n, int patch) const;
-    Rgb luminaire_light_at(const Vec3& x, const Vec3& n) const;
     void fill_bounds(Element& e) const;
 
     const PreparedScene& scene_;
