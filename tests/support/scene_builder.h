@@ -133,7 +133,6 @@ inline std::vector<Polygon> box_faces(Vec3 lo, Vec3 hi, bool facing_in) {
     return faces;
 }
 
-/// Replaces every box surface by six polygon surfaces named "<name>/0" … "<name>/5".
 /// §2.2 furnace: a closed unit cube whose every face emits E = 1 and reflects ρ: B = 1/(1 − ρ).
 inline Scene furnace_cube(double rho) {
     Scene scene;
@@ -143,6 +142,7 @@ inline Scene furnace_cube(double rho) {
     return scene;
 }
 
+/// Replaces every box surface by six polygon surfaces named "<name>/0" … "<name>/5".
 inline Scene boxes_as_polygons(Scene scene) {
     std::vector<Surface> out;
     for (auto& s : scene.surfaces) {

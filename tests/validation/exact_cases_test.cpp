@@ -379,6 +379,7 @@ TEST(CoplanarEmitter, ClosedRoomEnergyBalance) {
              << find_surface(r, "ceiling")->average_radiosity << ", area "
              << find_surface(r, "ceiling")->area_m2 << " m²; " << describe(r);
     EXPECT_NEAR(r.stats.emitted_flux_lm, 1000.0, 1e-6);
+    EXPECT_NEAR(ratio, 1.0, 1e-3) << measured.str();
 }
 
 TEST(CoplanarEmitter, OffsetEmitterEnergyBalance) {

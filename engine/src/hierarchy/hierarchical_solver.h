@@ -1,6 +1,8 @@
-// Solving the linked hierarchy: Jacobi sweeps of gather (every element sums K·B over its own
-// links) and push-pull (irradiance pushed down to the leaves, radiosity pulled up as area
-// averages), until a sound bound on the error of the linked system meets the tolerance.
+// Solving the linked hierarchy: a pass of progressive shooting (see progressive_shooting.h),
+// then Jacobi sweeps of gather (every element sums K·B over its own links) and push-pull
+// (irradiance pushed down to the leaves, radiosity pulled up as area averages), until a sound
+// bound on the error of the linked system meets the tolerance. In a closed enclosure the linked
+// operator is then made to conserve energy (see conserve()).
 #pragma once
 
 #include <functional>
@@ -16,6 +18,9 @@ struct HierarchicalOutcome {
     std::size_t iterations = 0;
     double error_estimate = 0;  ///< bound on the relative error of the linked system
     bool converged = false;
+    /// Light the links lost (or made) in closed enclosures before conserve() restored it, as a
+    /// share of the light emitted there: an error of the links the system bound cannot see.
+    double conservation_defect = 0;
 };
 
 class HierarchicalSystem {
@@ -26,8 +31,8 @@ public:
     HierarchicalSystem(ElementTree& tree, const std::vector<Link>& links,
                        const std::vector<char>& enclosed_patch, int channels);
 
-    /// Sweeps until the bound meets `control.tolerance`, the deadline passes or it is cancelled;
-    /// `publish` is called whenever control.snapshot_due says so.
+    /// Shoots, then sweeps until the bound meets `control.tolerance`, the deadline passes or it
+    /// is cancelled; `publish` is called at the snapshot rate.
     HierarchicalOutcome solve(const SolverControl& control, const std::function<void()>& publish);
 
     /// Irradiance (lux, per channel) on the front of leaf `e`, links and luminaires together.
@@ -37,9 +42,20 @@ private:
     struct Residual {
         std::array<double, 3> inf{0, 0, 0}, area_l1{0, 0, 0}, area_signed{0, 0, 0};
     };
-    void extrapolate(const Residual& now, const Residual& before);
+    HierarchicalOutcome iterate(const SolverControl& control, const std::function<void()>& publish,
+                                bool from_source);
+    double bound(const std::array<double, 3>& residual_inf) const;
+    bool extrapolate(const Residual& now, const Residual& before, const Residual& older);
     void gather();
-    void push(int e, const Rgb& down, double factor_sum, Residual& residual);
+    void push(int e, const Rgb& down, Residual& residual);
+    void find_parts();
+    void measure_defects();
+    void conserve(const SolverControl& control, HierarchicalOutcome& out);
+    double completion(const Element& leaf, double factor_sum) const;
+    /// Light a leaf gets from outside the links: emission and luminaires, or during the
+    /// conservation pass its share of the light its closed part's links lost.
+    Rgb outside_exitance(const Element& leaf) const;
+    Rgb outside_irradiance(const Element& leaf, std::size_t index) const;
 
     ElementTree& tree_;
     const std::vector<Link>& links_;
@@ -47,8 +63,21 @@ private:
     const std::vector<char>& enclosed_patch_;
     int channels_;
     std::vector<Rgb> irradiance_;
-    std::vector<Rgb> change_;  // each leaf's change in the last sweep
+    std::vector<Rgb> change_;         // each leaf's change in the last sweep
+    std::vector<double> factor_sum_;  // each surface element's link factors and its ancestors'
+    std::vector<double> leaf_scale_;  // what a leaf's gathered light is multiplied by
+    std::vector<double> weight_;      // Σ over an element's leaves of area × leaf_scale_
     double q_inf_ = 0;
+    double total_area_ = 0;  // of the leaves
+    std::size_t leaves_ = 0;
+    // Parts: sets of root patches that exchange light only among themselves. part_[p] is patch
+    // p's part, part_area_ the area of each part's leaves.
+    std::vector<int> part_;
+    std::vector<double> part_area_;
+    std::vector<char> part_closed_;
+    std::vector<double> defect_;  // per leaf of an enclosed patch: light its links fail to hand on
+    bool conserving_ = false;     // the conservation pass is running
+    std::vector<Rgb> spread_;     // its irradiance per unit of lost light (u in conserve())
 };
 
 }  // namespace radiant

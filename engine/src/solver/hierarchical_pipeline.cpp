@@ -190,8 +190,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     result.stats.emitted_flux_lm = summary.emitted_flux_lm;
     result.stats.absorbed_flux_lm = summary.absorbed_flux_lm;
     // In a closed scene every lumen emitted is absorbed: an imbalance is error of the links (and
-    // the estimate above bounds the linked system's only), so the estimate may not claim less.
-    double error_estimate = outcome.error_estimate;
+    // the estimate above bounds the linked system's only), so the estimate may not claim less —
+    // nor less than the light the links lost before the solver restored it.
+    double error_estimate = std::max(outcome.error_estimate, outcome.conservation_defect);
     const bool closed = std::all_of(enclosed.begin(), enclosed.end(), [](char c) { return c; });
     if (closed && summary.emitted_flux_lm > 0) {
         error_estimate = std::max(error_estimate,
