@@ -13,6 +13,24 @@
 
 namespace radiant::test {
 
+/// A buffer view of `length` bytes at `offset` in buffer 0 and an accessor of `count` items over
+/// it; returns the accessor's index.
+inline int add_accessor(tinygltf::Model& model, std::size_t offset, std::size_t length,
+                        int component_type, int type, std::size_t count) {
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = offset;
+    view.byteLength = length;
+    model.bufferViews.push_back(view);
+    tinygltf::Accessor accessor;
+    accessor.bufferView = static_cast<int>(model.bufferViews.size() - 1);
+    accessor.componentType = component_type;
+    accessor.type = type;
+    accessor.count = count;
+    model.accessors.push_back(accessor);
+    return static_cast<int>(model.accessors.size() - 1);
+}
+
 /// The .glb bytes. `positions`: x, y, z per vertex in glTF axes (y up, metres); `indices` may be
 /// empty (non-indexed); `mode` a TINYGLTF_MODE_*; `node_scale` empty or three factors.
 inline std::string single_primitive_glb(const std::vector<float>& positions,
@@ -28,42 +46,23 @@ inline std::string single_primitive_glb(const std::vector<float>& positions,
         std::memcpy(buffer.data.data() + vertex_bytes, indices.data(), index_bytes);
     model.buffers.push_back(buffer);
 
-    tinygltf::BufferView vertex_view;
-    vertex_view.buffer = 0;
-    vertex_view.byteLength = vertex_bytes;
-    model.bufferViews.push_back(vertex_view);
-    tinygltf::Accessor vertex_accessor;
-    vertex_accessor.bufferView = 0;
-    vertex_accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    vertex_accessor.type = TINYGLTF_TYPE_VEC3;
-    vertex_accessor.count = positions.size() / 3;
-    // glTF requires POSITION bounds.
-    vertex_accessor.minValues.assign(3, 1e300);
-    vertex_accessor.maxValues.assign(3, -1e300);
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-        vertex_accessor.minValues[i % 3] =
-            std::min<double>(vertex_accessor.minValues[i % 3], positions[i]);
-        vertex_accessor.maxValues[i % 3] =
-            std::max<double>(vertex_accessor.maxValues[i % 3], positions[i]);
-    }
-    model.accessors.push_back(vertex_accessor);
-
     tinygltf::Primitive primitive;
-    primitive.attributes["POSITION"] = 0;
     primitive.mode = mode;
+    primitive.attributes["POSITION"] =
+        add_accessor(model, 0, vertex_bytes, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3,
+                     positions.size() / 3);
+    // glTF requires POSITION bounds.
+    tinygltf::Accessor& vertices = model.accessors.back();
+    vertices.minValues.assign(3, 1e300);
+    vertices.maxValues.assign(3, -1e300);
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        vertices.minValues[i % 3] = std::min<double>(vertices.minValues[i % 3], positions[i]);
+        vertices.maxValues[i % 3] = std::max<double>(vertices.maxValues[i % 3], positions[i]);
+    }
     if (index_bytes > 0) {
-        tinygltf::BufferView index_view;
-        index_view.buffer = 0;
-        index_view.byteOffset = vertex_bytes;
-        index_view.byteLength = index_bytes;
-        model.bufferViews.push_back(index_view);
-        tinygltf::Accessor index_accessor;
-        index_accessor.bufferView = 1;
-        index_accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-        index_accessor.type = TINYGLTF_TYPE_SCALAR;
-        index_accessor.count = indices.size();
-        model.accessors.push_back(index_accessor);
-        primitive.indices = 1;
+        primitive.indices =
+            add_accessor(model, vertex_bytes, index_bytes, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                         TINYGLTF_TYPE_SCALAR, indices.size());
     }
     tinygltf::Mesh mesh;
     mesh.primitives.push_back(primitive);
