@@ -35,6 +35,16 @@ TEST(HierarchicalPhases, BlackClosedRoomBalancesAfterOnePass) {
     EXPECT_NEAR(r.stats.absorbed_flux_lm / r.stats.emitted_flux_lm, 1.0, 1e-3) << describe(r);
 }
 
+// Coloured walls: each channel is corrected on its own, and the room still balances.
+TEST(HierarchicalPhases, ColouredClosedRoomBalances) {
+    Scene scene = testing::room_with_ceiling_panel(0.5, 1000.0);
+    scene.materials[0].reflectance = {0.7, 0.5, 0.2};
+    scene.materials[0].rgb_reflectance = true;
+    const Result r = solve_hierarchical(scene);
+    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+    EXPECT_NEAR(r.stats.absorbed_flux_lm / r.stats.emitted_flux_lm, 1.0, 1e-3) << describe(r);
+}
+
 // The conservation step must leave a furnace alone: every leaf's defect is light it fails to
 // hand on, but a uniform radiosity loses none in total.
 TEST(HierarchicalPhases, ConservationKeepsAFurnaceExact) {
