@@ -19,6 +19,8 @@ namespace radiant {
 
 class ProgressiveShooting {
 public:
+    /// Every link's source is a surface element (a cluster's links pass on the light of the
+    /// root patches its samples lie on, see link_refinement), so each belongs to one patch.
     /// `scale[e]`: what leaf e's gathered factors are multiplied by (their completion);
     /// `weight[e]`: Σ over the leaves below e of area × scale, the light per unit irradiance
     /// that element e passes on to its leaves.
