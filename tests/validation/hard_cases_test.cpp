@@ -353,7 +353,7 @@ TEST(CoplanarOverlays, EmitterInCeilingAndRugOnFloorMatchCutSurfaces) {
     expect_finite(overlay);
     // The panel emits 2000 lm/m² over its 1 m², counted once.
     EXPECT_NEAR(overlay.stats.emitted_flux_lm, 2000.0, 1e-6);
-    // Closed rooms balance to the solve's tolerance (the estimate bounds the imbalance there);
+    // Closed rooms balance within the engine core's 0.1 % (the solver conserves light there);
     // an overlay that leaked or counted light twice would move its balance away from the cut
     // room's, whose links are the same but for the hidden patches.
     EXPECT_NEAR(absorbed_over_emitted(overlay), 1.0, 1e-3) << describe(overlay);

@@ -23,13 +23,9 @@ struct Candidate {
 
 ProgressiveShooting::ProgressiveShooting(ElementTree& tree, const std::vector<Link>& links,
                                          const std::vector<double>& scale,
-                                         const std::vector<double>& weight, int channels)
+                                         const std::vector<double>& weight, std::size_t n_patches,
+                                         int channels)
     : tree_(tree), links_(links), scale_(scale), weight_(weight), channels_(channels) {
-    int patches = 0;
-    for (std::size_t e = 0; e < tree.size(); ++e) {
-        if (!tree[e].cluster) patches = std::max(patches, tree[e].patch + 1);
-    }
-    const auto n_patches = static_cast<std::size_t>(patches);
     root_of_patch_.assign(n_patches, -1);
     for (std::size_t e = 0; e < tree.size(); ++e) {
         const Element& x = tree[e];

@@ -23,10 +23,10 @@ public:
     /// root patches its samples lie on, see link_refinement), so each belongs to one patch.
     /// `scale[e]`: what leaf e's gathered factors are multiplied by (their completion);
     /// `weight[e]`: Σ over the leaves below e of area × scale, the light per unit irradiance
-    /// that element e passes on to its leaves.
+    /// that element e passes on to its leaves; `n_patches`: the root patches' count.
     ProgressiveShooting(ElementTree& tree, const std::vector<Link>& links,
                         const std::vector<double>& scale, const std::vector<double>& weight,
-                        int channels);
+                        std::size_t n_patches, int channels);
 
     /// Lights the leaves with the source term (emission, reflected luminaire light), then shoots
     /// patch after patch, the one with the most unshot power first, until the shots have sent
