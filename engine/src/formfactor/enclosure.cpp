@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include <tbb/parallel_for.h>
 
 #include "formfactor/quadrature.h"
+#include "geometry/cosine_direction.h"
 #include "geometry/random.h"
 
 namespace radiant {
@@ -15,15 +15,6 @@ namespace {
 // A facing parallel surface nearer than this fraction of either's size is in near contact.
 constexpr double kNearContact = 0.02;
 constexpr double kParallelCosine = 0.99;
-
-// Cosine-distributed direction about unit n from two uniform numbers (Malley's method).
-Vec3 cosine_direction(const Vec3& n, double r1, double r2) {
-    const Vec3 t =
-        normalized(std::abs(n.x) < 0.9 ? cross(n, Vec3{1, 0, 0}) : cross(n, Vec3{0, 1, 0}));
-    const Vec3 b = cross(n, t);
-    const double s = std::sqrt(r1), phi = 2 * std::numbers::pi * r2;
-    return t * (s * std::cos(phi)) + b * (s * std::sin(phi)) + n * std::sqrt(1 - r1);
-}
 
 }  // namespace
 

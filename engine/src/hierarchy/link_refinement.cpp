@@ -73,7 +73,7 @@ public:
         const double power_per_factor =
             r.area_m2 *
             (closed(r) ? std::max(s.radiosity_max, criteria_.mean_radiosity) : s.radiosity_max);
-        const double limit = criteria_.power_epsilon_lm;
+        const double limit = criteria_.power_epsilon_lm / receiver_weight(r);
         const bool split_r = tree_.can_subdivide(p.receiver) && (may_split || !r.leaf());
         const bool split_s = tree_.can_subdivide(p.source) && (may_split || !s.leaf());
         const Decision split = choose_split(r, s, split_r, split_s);
@@ -167,6 +167,11 @@ private:
     bool closed(const Element& r) const {
         const auto patch = static_cast<std::size_t>(r.patch);
         return patch < criteria_.enclosed_patch.size() && criteria_.enclosed_patch[patch] != 0;
+    }
+
+    double receiver_weight(const Element& r) const {
+        const auto patch = static_cast<std::size_t>(r.patch);
+        return patch < criteria_.receiver_weight.size() ? criteria_.receiver_weight[patch] : 1.0;
     }
 
     static double box_distance(const Element& r, const Element& s) {

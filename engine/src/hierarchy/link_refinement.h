@@ -4,7 +4,8 @@
 // its children are tried. The oracle works in power: the spread of the kernel over the
 // receiver's points (and partial visibility) times the source's radiosity times the receiver's
 // area, and the spread of the kernel over the source's points times the range of its radiosity
-// times its area, against a fraction of the scene's emitted power.
+// times its area, against a fraction of the scene's emitted power, raised where the receiver
+// matters little to the sensors (importance).
 #pragma once
 
 #include <cstdint>
@@ -37,6 +38,9 @@ struct RefinementCriteria {
     /// Root patches in a closed enclosure (see HierarchicalSystem): their near-singular links
     /// keep the mean over their points, which the solver's completion of factor sums assumes.
     std::span<const char> enclosed_patch;
+    /// Per root patch, in (0, 1]: its share of the sensors' importance (see sensor_importance.h);
+    /// links into it may carry power_epsilon_lm / weight uncertain. Empty: all 1.
+    std::span<const double> receiver_weight;
     std::function<bool()> should_stop;  ///< polled between rounds and pairs, from any thread
     /// Told after each round: rounds done, rays cast and links made so far.
     std::function<void(int rounds, std::uint64_t rays, std::size_t links)> on_round;

@@ -8,6 +8,7 @@
 #include "hierarchy/hierarchical_solver.h"
 #include "hierarchy/leaf_mesh.h"
 #include "hierarchy/link_refinement.h"
+#include "hierarchy/sensor_importance.h"
 #include "meshing/patch_mesh.h"
 #include "solution/gouraud.h"
 #include "solution/surface_summary.h"
@@ -107,6 +108,11 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     criteria.ambient_irradiance = ambient;
     criteria.channels = channels;
     criteria.enclosed_patch = enclosed;
+    // Surfaces the sensors cannot see, directly or by reflection, need not be refined as finely.
+    const ImportanceEstimate importance = estimate_sensor_importance(
+        scene, tree, roots.size(), visibility, input.triangle_piece, options_.seed);
+    rays_ += importance.rays;
+    criteria.receiver_weight = importance.refinement_weight;
     criteria.should_stop = [this] { return should_stop(); };
     const std::uint64_t rays_before_links = rays_;
     criteria.on_round = [&](int rounds, std::uint64_t rays, std::size_t links) {
