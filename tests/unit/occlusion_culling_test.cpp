@@ -52,6 +52,22 @@ TEST(OcclusionCulling, ConvexRoomHasNoOccluders) {
     EXPECT_EQ(c.occluder_count(), 0u);
 }
 
+// The hierarchical solver casts no shadow ray at all in a convex scene; one piece that could
+// block (a panel hung 1 cm under the ceiling, a table) must be found.
+TEST(OcclusionCulling, NothingCanOccludeOnlyInAConvexScene) {
+    EXPECT_TRUE(nothing_can_occlude(prepare_scene(room_with(testing::polygon_surface(
+        "floor-rug", "wall", testing::rect({1, 1, 0}, {1, 0, 0}, {0, 1, 0}))))));
+    EXPECT_FALSE(nothing_can_occlude(prepare_scene(room_with(testing::polygon_surface(
+        "panel", "wall", testing::ceiling_rect(1.5, 2.5, 1.5, 2.5, 2.99))))));
+    EXPECT_FALSE(nothing_can_occlude(prepare_scene(
+        room_with(testing::box_surface("table", "wall", {1, 1, 0.7}, {2, 2, 0.75}, false)))));
+    // A sensor behind a wall (outside the room) makes the wall a possible blocker.
+    Scene outside = room_with(testing::polygon_surface(
+        "floor-rug", "wall", testing::rect({1, 1, 0}, {1, 0, 0}, {0, 1, 0})));
+    outside.sensors.push_back(testing::sensor_points("out", {{5, 2, 1}}));
+    EXPECT_FALSE(nothing_can_occlude(prepare_scene(outside)));
+}
+
 TEST(OcclusionCulling, TiltedPanelBetweenWallsMayBlock) {
     // Not axis aligned: its bounding box has volume.
     const PreparedScene p = prepare_scene(room_with(testing::polygon_surface(

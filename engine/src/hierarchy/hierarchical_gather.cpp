@@ -57,7 +57,7 @@ private:
     double surface_factor(const Vec3& x, const Vec3& n, const Element& e, int index,
                           std::uint64_t key, bool exact_leaf, std::uint64_t& rays) const {
         const double f = front_point_to_polygon_factor(x, n, e.polygon, e.normal);
-        if (f <= 0) return 0;
+        if (f <= 0 || criteria_.unoccluded) return std::max(f, 0.0);
         const int m =
             exact_leaf && e.emits ? criteria_.emitter_rays_per_point : criteria_.rays_per_point;
         SampleStream rng(criteria_.seed, key, static_cast<std::uint64_t>(index));
@@ -72,8 +72,11 @@ private:
         for (const SamplePoint& y : e.samples) {
             const double k = sample_kernel(x, n, y);
             if (k <= 0) continue;
-            ++rays;
-            if (visibility_.visible(x + n * eps, y.position + y.normal * eps)) g += k;
+            if (!criteria_.unoccluded) {
+                ++rays;
+                if (!visibility_.visible(x + n * eps, y.position + y.normal * eps)) continue;
+            }
+            g += k;
         }
         return g;
     }

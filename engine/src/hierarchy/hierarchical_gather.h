@@ -19,6 +19,7 @@ struct GatherCriteria {
     std::uint64_t seed = 1;
     int rays_per_point = 4;
     int emitter_rays_per_point = 16;
+    bool unoccluded = false;  ///< nothing can block (see nothing_can_occlude): no shadow rays
 };
 
 /// Illuminance (lux; luminance of the RGB irradiance for colour scenes) at every sensor point.

@@ -104,7 +104,7 @@ public:
         // The receiver-side spread cannot see a source whose light varies over it: split that.
         if (!clusters && split_s && source_error(r, s) > limit) return {Decision::split_source, {}};
 
-        const KernelSamples seen = kernel(r, s, p, true, rays);
+        const KernelSamples seen = criteria_.unoccluded ? open : kernel(r, s, p, true, rays);
         if (seen.factor <= 0) return {};
         double error = power_per_factor * (clusters ? seen.factor : seen.spread);
         if (seen.partial) error = std::max(error, power_per_factor * seen.factor);

@@ -30,7 +30,8 @@ struct RefinementCriteria {
     /// Mean radiosity of all surfaces (first guess): the light a closed receiver's factor-sum
     /// completion spreads over an error in a factor, whatever the source's own radiosity.
     double mean_radiosity = 0;
-    int rays_per_point = 4;  ///< shadow rays per receiver point toward a surface source
+    int rays_per_point = 4;   ///< shadow rays per receiver point toward a surface source
+    bool unoccluded = false;  ///< nothing can block (see nothing_can_occlude): no shadow rays
     std::uint64_t seed = 1;
     double ambient_irradiance = 0;  ///< guess of the reflected light, for new elements' estimates
     int channels = 1;

@@ -13,6 +13,7 @@
 #include "solution/gouraud.h"
 #include "solution/surface_summary.h"
 #include "solver/pipeline.h"
+#include "visibility/occlusion_culling.h"
 
 namespace radiant {
 namespace {
@@ -108,6 +109,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     criteria.ambient_irradiance = ambient;
     criteria.channels = channels;
     criteria.enclosed_patch = enclosed;
+    // In a convex scene (a plain room, a sphere) whatever faces each other sees each other.
+    const bool unoccluded = nothing_can_occlude(scene);
+    criteria.unoccluded = unoccluded;
     // Surfaces the sensors cannot see, directly or by reflection, need not be refined as finely.
     const ImportanceEstimate importance = estimate_sensor_importance(
         scene, tree, roots.size(), visibility, input.triangle_piece, options_.seed);
@@ -146,6 +150,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         gather.irradiance_epsilon =
             coarsening * kGatherIrradianceFraction * options_.tolerance * mean_irradiance;
         gather.seed = options_.seed;
+        gather.unoccluded = unoccluded;
         return gather_sensors_from_tree(scene, tree, visibility, gather, channels, rays_);
     };
     report("solving", 0.6);

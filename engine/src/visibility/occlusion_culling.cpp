@@ -2,6 +2,7 @@
 #include "radiant/box.h"
 
 #include <algorithm>
+#include <atomic>
 
 #include <tbb/parallel_for.h>
 
@@ -18,20 +19,29 @@ namespace {
 // A piece with all geometry, luminaires and sensors on or in front of its plane (a wall of a
 // convex room, a facet of a sphere) bounds the scene's convex hull: a segment between two points
 // in that closed half-space cannot cross it, so it never blocks anything.
-std::vector<int> potential_occluders(const PreparedScene& scene, double eps) {
+std::vector<Vec3> everything_placed(const PreparedScene& scene) {
     std::vector<Vec3> points;
     for (const Piece& p : scene.pieces)
         points.insert(points.end(), p.vertices.begin(), p.vertices.end());
     for (const PreparedLuminaire& l : scene.luminaires) points.push_back(l.position);
     for (const PreparedSensorSet& s : scene.sensors)
         points.insert(points.end(), s.points.begin(), s.points.end());
+    return points;
+}
+
+bool may_occlude(const Piece& p, std::span<const Vec3> points, double eps) {
+    return std::any_of(points.begin(), points.end(),
+                       [&](const Vec3& v) { return dot(v - p.vertices[0], p.normal) < -eps; });
+}
+
+double culling_epsilon(const PreparedScene& scene) { return 1e-7 * scene.diagonal_m; }
+
+std::vector<int> potential_occluders(const PreparedScene& scene, double eps) {
+    const std::vector<Vec3> points = everything_placed(scene);
     const std::size_t k = scene.pieces.size();
     std::vector<char> occludes(k, 0);
     tbb::parallel_for(std::size_t{0}, k, [&](std::size_t q) {
-        const Piece& p = scene.pieces[q];
-        occludes[q] = std::any_of(points.begin(), points.end(), [&](const Vec3& v) {
-            return dot(v - p.vertices[0], p.normal) < -eps;
-        });
+        occludes[q] = may_occlude(scene.pieces[q], points, eps);
     });
     std::vector<int> out;
     for (std::size_t q = 0; q < k; ++q) {
@@ -42,8 +52,19 @@ std::vector<int> potential_occluders(const PreparedScene& scene, double eps) {
 
 }  // namespace
 
+bool nothing_can_occlude(const PreparedScene& scene) {
+    const std::vector<Vec3> points = everything_placed(scene);
+    const double eps = culling_epsilon(scene);
+    std::atomic<bool> found{false};
+    tbb::parallel_for(std::size_t{0}, scene.pieces.size(), [&](std::size_t q) {
+        if (!found.load(std::memory_order_relaxed) && may_occlude(scene.pieces[q], points, eps))
+            found = true;
+    });
+    return !found;
+}
+
 OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_tests)
-    : scene_(scene), eps_(1e-7 * scene.diagonal_m) {
+    : scene_(scene), eps_(culling_epsilon(scene)) {
     const std::size_t k = scene.pieces.size();
     boxes_.reserve(k);
     for (const Piece& p : scene.pieces) boxes_.push_back(bounding_box(p.vertices));

@@ -10,6 +10,11 @@
 
 namespace radiant {
 
+/// True when no piece can block anything: every piece has all geometry, luminaires and sensors
+/// on or in front of its plane (a convex room, a sphere), so every two points that face each
+/// other see each other. Stops at the first piece that might block.
+bool nothing_can_occlude(const PreparedScene& scene);
+
 class OcclusionCulling {
 public:
     /// Finds the pieces that can block anything at all, then precomputes for every ordered pair
