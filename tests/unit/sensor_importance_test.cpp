@@ -62,8 +62,7 @@ struct Linkable {
         tree = std::make_unique<ElementTree>(scene, roots, *visibility, 0.25, 1);
     }
     ImportanceEstimate importance() const {
-        return estimate_sensor_importance(scene, *tree, roots.size(), *visibility, triangle_piece,
-                                          1);
+        return estimate_sensor_importance(scene, roots, *tree, *visibility, triangle_piece, 1);
     }
 
     PreparedScene scene;
@@ -133,7 +132,7 @@ std::size_t triangles_in_room_b(const SolvedMesh& mesh) {
 }
 
 TEST(SensorImportance, UnseenRoomStaysCoarseAndTheSensorsReadTheSame) {
-    const double tolerance = 0.05;
+    const double tolerance = 0.01;
     auto solve_scene = [&](bool sensors_in_b) {
         SolveOptions options;
         options.method = "hierarchical";
@@ -146,7 +145,7 @@ TEST(SensorImportance, UnseenRoomStaysCoarseAndTheSensorsReadTheSame) {
     ASSERT_EQ(seen.status, SolveStatus::converged) << describe(seen);
     ASSERT_EQ(unseen.status, SolveStatus::converged) << describe(unseen);
     ASSERT_TRUE(seen.mesh && unseen.mesh);
-    EXPECT_LT(triangles_in_room_b(*unseen.mesh), triangles_in_room_b(*seen.mesh) / 3)
+    EXPECT_LT(triangles_in_room_b(*unseen.mesh), triangles_in_room_b(*seen.mesh) / 2)
         << describe(unseen) << " against " << describe(seen);
     EXPECT_LT(unseen.stats.links, seen.stats.links);
     // Room A's work plane does not notice: each reading within a tenth of the tolerance.

@@ -25,6 +25,8 @@ constexpr std::size_t kMinWalks = 16384;
 constexpr std::size_t kMaxWalks = std::size_t{1} << 21;
 // A hit point lies within this many ray epsilons of the patch it hit (single-precision rays).
 constexpr double kLocateMargin = 4;
+// Pieces with at most this many root patches are searched directly, larger ones down the tree.
+constexpr std::size_t kScannedPatches = 16;
 
 struct SensorPoint {
     Vec3 position;
@@ -33,14 +35,22 @@ struct SensorPoint {
 
 class Walker {
 public:
-    Walker(const PreparedScene& scene, const ElementTree& tree, const Visibility& visibility,
-           std::span<const int> triangle_piece)
+    Walker(const PreparedScene& scene, const PatchMesh& roots, const ElementTree& tree,
+           const Visibility& visibility, std::span<const int> triangle_piece)
         : scene_(scene),
           tree_(tree),
           visibility_(visibility),
           triangle_piece_(triangle_piece),
           eps_(visibility.epsilon()),
-          reach_(4 * scene.diagonal_m + 1) {}
+          reach_(4 * scene.diagonal_m + 1),
+          piece_roots_(scene.pieces.size()) {
+        for (std::size_t e = 0; e < tree.size(); ++e) {
+            const Element& x = tree[e];
+            if (x.cluster || x.depth > 0) continue;
+            const int piece = roots.patch(static_cast<std::size_t>(x.patch)).piece;
+            piece_roots_[static_cast<std::size_t>(piece)].push_back(static_cast<int>(e));
+        }
+    }
 
     /// Counts the walk's visits to each root patch in `visits`; returns the rays cast. `stack`
     /// is scratch space for the tree search.
@@ -56,12 +66,13 @@ public:
             if (hit.triangle < 0) break;
             const auto tri = static_cast<std::size_t>(hit.triangle);
             if (tri >= triangle_piece_.size()) break;
-            const Piece& q = scene_.pieces[static_cast<std::size_t>(triangle_piece_[tri])];
+            const auto piece = static_cast<std::size_t>(triangle_piece_[tri]);
+            const Piece& q = scene_.pieces[piece];
             const PreparedMaterial& m = scene_.materials[static_cast<std::size_t>(q.material)];
             const bool front = dot(dir, q.normal) < 0;
             if (!front && !m.two_sided) break;  // the back of a one-sided surface sends nothing
             const Vec3 at = origin + dir * hit.t;
-            const int patch = locate(at, dir, stack);
+            const int patch = locate(at, dir, piece, stack);
             if (patch >= 0) ++visits[static_cast<std::size_t>(patch)];
             // Russian roulette: the walk goes on with the reflectance's probability, so that
             // every visit weighs the same and the counts are exact integers.
@@ -73,10 +84,18 @@ public:
     }
 
 private:
-    // The root patch facing against `dir` whose polygon holds x, found down the cluster tree;
-    // −1 if none does (a hidden patch under a coplanar cover has no element).
-    int locate(const Vec3& x, const Vec3& dir, std::vector<int>& stack) const {
+    // The root patch facing against `dir` whose polygon holds x: among the patches of the piece
+    // hit if it has few, else (or if none of them holds it: a hidden patch under a coplanar cover
+    // has no element) down the cluster tree; −1 if none does.
+    int locate(const Vec3& x, const Vec3& dir, std::size_t piece, std::vector<int>& stack) const {
         const double tol = kLocateMargin * eps_;
+        const std::vector<int>& own = piece_roots_[piece];
+        if (own.size() <= kScannedPatches) {
+            for (const int e : own) {
+                const Element& x_e = tree_[static_cast<std::size_t>(e)];
+                if (dot(x_e.normal, dir) < 0 && holds(x_e, x, tol)) return x_e.patch;
+            }
+        }
         stack.assign(1, tree_.top());
         while (!stack.empty()) {
             const Element& e = tree_[static_cast<std::size_t>(stack.back())];
@@ -110,15 +129,16 @@ private:
     std::span<const int> triangle_piece_;
     double eps_;
     double reach_;
+    std::vector<std::vector<int>> piece_roots_;  // root elements of each piece
 };
 
 }  // namespace
 
-ImportanceEstimate estimate_sensor_importance(const PreparedScene& scene, const ElementTree& tree,
-                                              std::size_t root_patches,
-                                              const Visibility& visibility,
+ImportanceEstimate estimate_sensor_importance(const PreparedScene& scene, const PatchMesh& roots,
+                                              const ElementTree& tree, const Visibility& visibility,
                                               std::span<const int> triangle_piece,
                                               std::uint64_t seed, int walks_per_patch) {
+    const std::size_t root_patches = roots.size();
     ImportanceEstimate out{std::vector<double>(root_patches, 0.0),
                            std::vector<double>(root_patches, 1.0), 0};
     std::vector<SensorPoint> points;
@@ -132,7 +152,7 @@ ImportanceEstimate estimate_sensor_importance(const PreparedScene& scene, const 
                    kMaxWalks);
     const std::size_t per_point =
         std::max<std::size_t>(1, (walks + points.size() - 1) / points.size());
-    const Walker walker(scene, tree, visibility, triangle_piece);
+    const Walker walker(scene, roots, tree, visibility, triangle_piece);
     tbb::combinable<std::vector<std::uint64_t>> visits(
         [root_patches] { return std::vector<std::uint64_t>(root_patches, 0); });
     tbb::combinable<std::vector<int>> stacks;

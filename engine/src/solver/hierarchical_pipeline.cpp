@@ -114,7 +114,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     criteria.unoccluded = unoccluded;
     // Surfaces the sensors cannot see, directly or by reflection, need not be refined as finely.
     const ImportanceEstimate importance = estimate_sensor_importance(
-        scene, tree, roots.size(), visibility, input.triangle_piece, options_.seed);
+        scene, roots, tree, visibility, input.triangle_piece, options_.seed);
     rays_ += importance.rays;
     criteria.receiver_weight = importance.refinement_weight;
     criteria.should_stop = [this] { return should_stop(); };
