@@ -8,6 +8,7 @@
 
 #include "geometry/cosine_direction.h"
 #include "geometry/random.h"
+#include "hierarchy/root_patch_locator.h"
 #include "solution/surface_summary.h"
 
 namespace radiant {
@@ -25,8 +26,6 @@ constexpr std::size_t kMinWalks = 16384;
 constexpr std::size_t kMaxWalks = std::size_t{1} << 21;
 // A hit point lies within this many ray epsilons of the patch it hit (single-precision rays).
 constexpr double kLocateMargin = 4;
-// Pieces with at most this many root patches are searched directly, larger ones down the tree.
-constexpr std::size_t kScannedPatches = 16;
 
 struct SensorPoint {
     Vec3 position;
@@ -38,19 +37,11 @@ public:
     Walker(const PreparedScene& scene, const PatchMesh& roots, const ElementTree& tree,
            const Visibility& visibility, std::span<const int> triangle_piece)
         : scene_(scene),
-          tree_(tree),
           visibility_(visibility),
           triangle_piece_(triangle_piece),
           eps_(visibility.epsilon()),
           reach_(4 * scene.diagonal_m + 1),
-          piece_roots_(scene.pieces.size()) {
-        for (std::size_t e = 0; e < tree.size(); ++e) {
-            const Element& x = tree[e];
-            if (x.cluster || x.depth > 0) continue;
-            const int piece = roots.patch(static_cast<std::size_t>(x.patch)).piece;
-            piece_roots_[static_cast<std::size_t>(piece)].push_back(static_cast<int>(e));
-        }
-    }
+          locator_(scene, roots, tree, kLocateMargin * eps_) {}
 
     /// Counts the walk's visits to each root patch in `visits`; returns the rays cast. `stack`
     /// is scratch space for the tree search.
@@ -72,7 +63,7 @@ public:
             const bool front = dot(dir, q.normal) < 0;
             if (!front && !m.two_sided) break;  // the back of a one-sided surface sends nothing
             const Vec3 at = origin + dir * hit.t;
-            const int patch = locate(at, dir, piece, stack);
+            const int patch = locator_.locate(at, dir, static_cast<int>(piece), stack);
             if (patch >= 0) ++visits[static_cast<std::size_t>(patch)];
             // Russian roulette: the walk goes on with the reflectance's probability, so that
             // every visit weighs the same and the counts are exact integers.
@@ -84,52 +75,12 @@ public:
     }
 
 private:
-    // The root patch facing against `dir` whose polygon holds x: among the patches of the piece
-    // hit if it has few, else (or if none of them holds it: a hidden patch under a coplanar cover
-    // has no element) down the cluster tree; −1 if none does.
-    int locate(const Vec3& x, const Vec3& dir, std::size_t piece, std::vector<int>& stack) const {
-        const double tol = kLocateMargin * eps_;
-        const std::vector<int>& own = piece_roots_[piece];
-        if (own.size() <= kScannedPatches) {
-            for (const int e : own) {
-                const Element& x_e = tree_[static_cast<std::size_t>(e)];
-                if (dot(x_e.normal, dir) < 0 && holds(x_e, x, tol)) return x_e.patch;
-            }
-        }
-        stack.assign(1, tree_.top());
-        while (!stack.empty()) {
-            const Element& e = tree_[static_cast<std::size_t>(stack.back())];
-            stack.pop_back();
-            if (x.x < e.lo.x - tol || x.y < e.lo.y - tol || x.z < e.lo.z - tol ||
-                x.x > e.hi.x + tol || x.y > e.hi.y + tol || x.z > e.hi.z + tol) {
-                continue;
-            }
-            if (e.cluster) {
-                stack.insert(stack.end(), e.children.begin(), e.children.end());
-            } else if (dot(e.normal, dir) < 0 && holds(e, x, tol)) {
-                return e.patch;
-            }
-        }
-        return -1;
-    }
-
-    static bool holds(const Element& e, const Vec3& x, double tol) {
-        if (std::abs(dot(x - e.polygon[0], e.normal)) > tol) return false;
-        for (std::size_t i = 0; i < e.polygon.size(); ++i) {
-            const Vec3& a = e.polygon[i];
-            const Vec3& b = e.polygon[(i + 1) % e.polygon.size()];
-            if (dot(cross(b - a, x - a), e.normal) < -tol * length(b - a)) return false;
-        }
-        return true;
-    }
-
     const PreparedScene& scene_;
-    const ElementTree& tree_;
     const Visibility& visibility_;
     std::span<const int> triangle_piece_;
     double eps_;
     double reach_;
-    std::vector<std::vector<int>> piece_roots_;  // root elements of each piece
+    RootPatchLocator locator_;
 };
 
 }  // namespace
