@@ -65,6 +65,13 @@ inline Polygon ceiling_rect(double x0, double x1, double y0, double y1, double z
     return rect({x0, y0, z}, {0, y1 - y0, 0}, {x1 - x0, 0, 0});
 }
 
+/// The closed room [0,X] × [0,Y] × [0,Z]: room_without_ceiling's surfaces, then its `ceiling`.
+inline std::vector<Surface> closed_room(double x, double y, double z, const std::string& material) {
+    std::vector<Surface> surfaces = room_without_ceiling(x, y, z, material);
+    surfaces.push_back(polygon_surface("ceiling", material, ceiling_rect(0, x, 0, y, z)));
+    return surfaces;
+}
+
 /// A closed 4 × 4 × 3 m room whose ceiling has a flush 1 × 1 m emitting panel in the middle
 /// (the ceiling is cut around it). Every surface has `reflectance`; the panel emits `exitance`.
 inline Scene room_with_ceiling_panel(double reflectance, double exitance) {

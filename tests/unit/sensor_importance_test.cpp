@@ -28,9 +28,7 @@ Scene two_sealed_rooms(bool sensors_in_b) {
     Scene scene;
     scene.name = "two-sealed-rooms";
     scene.materials = {testing::gray("wall", 0.7), testing::gray("panel", 0.0, 5000.0)};
-    scene.surfaces = testing::room_without_ceiling(8.2, 4, 3, "wall");
-    scene.surfaces.push_back(
-        testing::polygon_surface("ceiling", "wall", testing::ceiling_rect(0, 8.2, 0, 4, 3)));
+    scene.surfaces = testing::closed_room(8.2, 4, 3, "wall");
     scene.surfaces.push_back(
         testing::box_surface("partition", "wall", {4, 0, 0}, {4.2, 4, 3}, false));
     scene.surfaces.push_back(testing::polygon_surface(

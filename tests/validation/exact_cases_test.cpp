@@ -345,9 +345,7 @@ Scene ceiling_with_overlay(double offset) {
     Scene scene;
     scene.name = "coplanar-panel";
     scene.materials = {testing::gray("wall", 0.5), testing::gray("panel", 0.5, 1000.0)};
-    scene.surfaces = testing::room_without_ceiling(4, 4, 3, "wall");
-    scene.surfaces.push_back(
-        testing::polygon_surface("ceiling", "wall", testing::ceiling_rect(0, 4, 0, 4, 3)));
+    scene.surfaces = testing::closed_room(4, 4, 3, "wall");
     scene.surfaces.push_back(testing::polygon_surface(
         "panel", "panel", testing::ceiling_rect(1.5, 2.5, 1.5, 2.5, 3 - offset)));
     return scene;

@@ -489,10 +489,8 @@ Scene emitter_over_floor(double floor_reflectance) {
     scene.name = "emitter-1mm-above-floor";
     scene.materials = {testing::gray("emitter", 0.0, kEmitterExitance), testing::gray("black", 0.0),
                        testing::gray("floor", floor_reflectance)};
-    scene.surfaces = testing::room_without_ceiling(4, 4, 3, "black");
+    scene.surfaces = testing::closed_room(4, 4, 3, "black");
     scene.surfaces[0].material = "floor";
-    scene.surfaces.push_back(
-        testing::polygon_surface("ceiling", "black", testing::ceiling_rect(0, 4, 0, 4, 3)));
     scene.surfaces.push_back(testing::polygon_surface(
         "emitter", "emitter", testing::ceiling_rect(1.5, 2.5, 1.5, 2.5, kGap)));
     return scene;
