@@ -107,6 +107,14 @@ TEST(SensorImportance, SealedRoomWithoutSensorsGetsTheLeastWeight) {
     EXPECT_EQ(full_in_a, in_a);
 }
 
+TEST(SensorImportance, StopsWhenAsked) {
+    const Linkable linkable(two_sealed_rooms(false));
+    const ImportanceEstimate w = estimate_sensor_importance(
+        linkable.scene, linkable.roots, *linkable.tree, *linkable.visibility,
+        linkable.triangle_piece, 1, [] { return true; });
+    EXPECT_EQ(w.rays, 0u);
+}
+
 TEST(SensorImportance, SameForAnyThreadCount) {
     const Linkable linkable(two_sealed_rooms(false));
     ImportanceEstimate one;

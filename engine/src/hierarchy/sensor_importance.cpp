@@ -88,7 +88,9 @@ private:
 ImportanceEstimate estimate_sensor_importance(const PreparedScene& scene, const PatchMesh& roots,
                                               const ElementTree& tree, const Visibility& visibility,
                                               std::span<const int> triangle_piece,
-                                              std::uint64_t seed, int walks_per_patch) {
+                                              std::uint64_t seed,
+                                              const std::function<bool()>& should_stop,
+                                              int walks_per_patch) {
     const std::size_t root_patches = roots.size();
     ImportanceEstimate out{std::vector<double>(root_patches, 0.0),
                            std::vector<double>(root_patches, 1.0), 0};
@@ -108,7 +110,10 @@ ImportanceEstimate estimate_sensor_importance(const PreparedScene& scene, const 
         [root_patches] { return std::vector<std::uint64_t>(root_patches, 0); });
     tbb::combinable<std::vector<int>> stacks;
     tbb::combinable<std::uint64_t> rays([] { return std::uint64_t{0}; });
+    // A cancel or deadline stops the walks between points; linking, which comes next, then stops
+    // too, so the partial counts are never used for a result.
     tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t i) {
+        if (should_stop && should_stop()) return;
         std::vector<std::uint64_t>& local = visits.local();
         std::vector<int>& stack = stacks.local();
         for (std::size_t w = 0; w < per_point; ++w) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -41,6 +42,8 @@ inline constexpr double kMinRefinementWeight = 1.0 / 4;
 ImportanceEstimate estimate_sensor_importance(const PreparedScene& scene, const PatchMesh& roots,
                                               const ElementTree& tree, const Visibility& visibility,
                                               std::span<const int> triangle_piece,
-                                              std::uint64_t seed, int walks_per_patch = 16);
+                                              std::uint64_t seed,
+                                              const std::function<bool()>& should_stop = {},
+                                              int walks_per_patch = 16);
 
 }  // namespace radiant

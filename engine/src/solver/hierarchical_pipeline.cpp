@@ -113,8 +113,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     const bool unoccluded = nothing_can_occlude(scene);
     criteria.unoccluded = unoccluded;
     // Surfaces the sensors cannot see, directly or by reflection, need not be refined as finely.
-    const ImportanceEstimate importance = estimate_sensor_importance(
-        scene, roots, tree, visibility, input.triangle_piece, options_.seed);
+    const ImportanceEstimate importance =
+        estimate_sensor_importance(scene, roots, tree, visibility, input.triangle_piece,
+                                   options_.seed, [this] { return should_stop(); });
     rays_ += importance.rays;
     criteria.receiver_weight = importance.refinement_weight;
     criteria.should_stop = [this] { return should_stop(); };
