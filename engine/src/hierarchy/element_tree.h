@@ -50,6 +50,15 @@ struct Element {
     bool leaf() const { return children.empty(); }
 };
 
+/// What a surface element sends before any interreflection: its emission plus the luminaires'
+/// light it reflects.
+inline Rgb source_radiosity(const Element& e) {
+    Rgb b;
+    for (std::size_t c = 0; c < 3; ++c)
+        b[c] = e.exitance[c] + e.reflectance[c] * e.luminaire_irradiance[c];
+    return b;
+}
+
 class ElementTree {
 public:
     /// Roots are the visible patches of `patches`; hidden ones (under coplanar overlays) are

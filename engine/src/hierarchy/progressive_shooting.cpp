@@ -54,8 +54,7 @@ std::array<double, 3> ProgressiveShooting::run(const SolverControl& control,
     for (std::size_t e = 0; e < n; ++e) {
         Element& x = tree_[e];
         if (x.cluster) continue;
-        for (int c = 0; c < 3; ++c)
-            x.radiosity[c] = x.exitance[c] + x.reflectance[c] * x.luminaire_irradiance[c];
+        x.radiosity = source_radiosity(x);
         if (!x.leaf()) continue;
         irradiance[e] = x.luminaire_irradiance;
         unshot_[e] = x.radiosity;

@@ -85,10 +85,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         for (std::size_t e = 0; e < tree.size(); ++e) {
             const Element& x = tree[e];
             if (x.cluster || x.depth > 0) continue;
-            Rgb b{};
-            for (std::size_t c = 0; c < 3; ++c)
-                b[c] = x.exitance[c] + x.reflectance[c] * x.luminaire_irradiance[c];
-            source[static_cast<std::size_t>(x.patch)] = photometric(b, channels);
+            source[static_cast<std::size_t>(x.patch)] = photometric(source_radiosity(x), channels);
         }
         snapshots_.offer(
             std::make_shared<const SolvedMesh>(gouraud_mesh(roots, source, scene.world_origin)),
