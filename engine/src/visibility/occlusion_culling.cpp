@@ -16,9 +16,7 @@ constexpr std::size_t kMaxPointTests = 256;
 
 namespace {
 
-// A piece with all geometry, luminaires and sensors on or in front of its plane (a wall of a
-// convex room, a facet of a sphere) bounds the scene's convex hull: a segment between two points
-// in that closed half-space cannot cross it, so it never blocks anything.
+// Every point a segment may end at: the pieces' corners, the luminaires and the sensors.
 std::vector<Vec3> everything_placed(const PreparedScene& scene) {
     std::vector<Vec3> points;
     for (const Piece& p : scene.pieces)
@@ -29,6 +27,9 @@ std::vector<Vec3> everything_placed(const PreparedScene& scene) {
     return points;
 }
 
+// A piece with all geometry, luminaires and sensors on or in front of its plane (a wall of a
+// convex room, a facet of a sphere) bounds the scene's convex hull: a segment between two points
+// in that closed half-space cannot cross it, so it never blocks anything.
 bool may_occlude(const Piece& p, std::span<const Vec3> points, double eps) {
     return std::any_of(points.begin(), points.end(),
                        [&](const Vec3& v) { return dot(v - p.vertices[0], p.normal) < -eps; });
