@@ -14,6 +14,16 @@ TEST(AmbientTerm, HandComputation) {
     EXPECT_NEAR(ambient_term(unshot, rho, area), 0.5 / 0.35, 1e-12);
 }
 
+TEST(AmbientTerm, OpenScenesWeighAreasByTheShareTheySee) {
+    // As above, the second patch seeing surfaces over half its hemisphere: Σ s A = 2.5;
+    // kept = (1·0.5·1 + 0.5²·0.7·3)/2.5 = 0.41; Σ s ΔB A / Σ s A = 2/2.5 = 0.8.
+    const std::vector<double> unshot{2.0, 0.0}, rho{0.5, 0.7}, area{1.0, 3.0};
+    EXPECT_NEAR(ambient_term(unshot, rho, area, {1.0, 0.5}), 0.8 / 0.59, 1e-12);
+    // A patch that sees nothing neither gets nor spreads ambient light.
+    EXPECT_NEAR(ambient_term(unshot, rho, area, {1.0, 0.0}), 2.0 / 0.5, 1e-12);
+    EXPECT_EQ(ambient_term(unshot, rho, area, {1.0, 1.0}), ambient_term(unshot, rho, area));
+}
+
 TEST(AmbientTerm, NothingUnshotNothingAmbient) {
     EXPECT_EQ(ambient_term({0.0, 0.0}, {0.9, 0.9}, {1.0, 1.0}), 0.0);
     EXPECT_EQ(ambient_term({}, {}, {}), 0.0);

@@ -246,8 +246,8 @@ HierarchicalOutcome HierarchicalSystem::solve(const SolverControl& control,
         out.converged = true;
         return out;
     }
-    ProgressiveShooting shooting(tree_, links_, leaf_scale_, weight_, enclosed_patch_.size(),
-                                 channels_);
+    ProgressiveShooting shooting(tree_, links_, factor_sum_, leaf_scale_, weight_,
+                                 enclosed_patch_.size(), channels_);
     std::array<double, 3> residual = shooting.run(control, publish, irradiance_);
     for (double& r : residual) r *= q_inf_;
     out.error_estimate = bound(residual);

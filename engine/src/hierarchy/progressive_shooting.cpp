@@ -7,6 +7,7 @@
 #include <boost/heap/d_ary_heap.hpp>
 
 #include "solution/surface_summary.h"
+#include "solver/solver.h"
 
 namespace radiant {
 namespace {
@@ -22,10 +23,16 @@ struct Candidate {
 }  // namespace
 
 ProgressiveShooting::ProgressiveShooting(ElementTree& tree, const std::vector<Link>& links,
+                                         const std::vector<double>& factor_sum,
                                          const std::vector<double>& scale,
                                          const std::vector<double>& weight, std::size_t n_patches,
                                          int channels)
-    : tree_(tree), links_(links), scale_(scale), weight_(weight), channels_(channels) {
+    : tree_(tree),
+      links_(links),
+      factor_sum_(factor_sum),
+      scale_(scale),
+      weight_(weight),
+      channels_(channels) {
     root_of_patch_.assign(n_patches, -1);
     for (std::size_t e = 0; e < tree.size(); ++e) {
         const Element& x = tree[e];
@@ -51,6 +58,7 @@ std::array<double, 3> ProgressiveShooting::run(const SolverControl& control,
     pending_.assign(n, Rgb{0, 0, 0});
     unshot_.assign(n, Rgb{0, 0, 0});
     power_.assign(root_of_patch_.size(), 0.0);
+    double area = 0, rho_area = 0;
     for (std::size_t e = 0; e < n; ++e) {
         Element& x = tree_[e];
         if (x.cluster) continue;
@@ -60,7 +68,11 @@ std::array<double, 3> ProgressiveShooting::run(const SolverControl& control,
         unshot_[e] = x.radiosity;
         power_[static_cast<std::size_t>(x.patch)] +=
             x.area_m2 * photometric(x.radiosity, channels_);
+        area += x.area_m2;
+        rho_area +=
+            x.area_m2 * *std::max_element(x.reflectance.begin(), x.reflectance.begin() + channels_);
     }
+    omega_ = over_relaxation(area > 0 ? rho_area / area : 0);
     // Most unshot power first (ties: the lower patch index, so the order is reproducible); a
     // patch is in the queue at most once, its key raised as light reaches it.
     using Queue =
@@ -87,6 +99,7 @@ std::array<double, 3> ProgressiveShooting::run(const SolverControl& control,
         queued[shooter] = 0;
         send(patch, irradiance);
         links_sent += first_sent_[shooter + 1] - first_sent_[shooter];
+        offer(patch);  // what it overshot
         for (const int p : touched_) {
             is_touched_[static_cast<std::size_t>(p)] = 0;
             offer(p);
@@ -95,8 +108,7 @@ std::array<double, 3> ProgressiveShooting::run(const SolverControl& control,
         const auto now = std::chrono::steady_clock::now();
         if (publish && now - last_snapshot >= control.snapshot_interval) {
             settle_all(irradiance);
-            tree_.pull_up(channels_);
-            publish();
+            publish_with_ambient(publish);
             last_snapshot = now;
         }
         if (control.should_stop()) break;
@@ -127,18 +139,19 @@ void ProgressiveShooting::send(int patch, std::vector<Rgb>& irradiance) {
         const Element& receiver = tree_[r];
         Rgb reflected{0, 0, 0};
         for (int c = 0; c < channels_; ++c) {
-            pending_[r][c] += l.factor * u[c];
-            reflected[c] = receiver.reflectance[c] * l.factor * u[c];
+            const double received = omega_ * l.factor * u[c];
+            pending_[r][c] += received;
+            reflected[c] = receiver.reflectance[c] * received;
         }
         const auto q = static_cast<std::size_t>(receiver.patch);
-        power_[q] += weight_[r] * photometric(reflected, channels_);
+        power_[q] += weight_[r] * std::abs(photometric(reflected, channels_));
         if (!is_touched_[q]) {
             is_touched_[q] = 1;
             touched_.push_back(receiver.patch);
         }
     }
-    clear_unshot(root);
-    power_[p] = 0;
+    scale_unshot(root, 1 - omega_);
+    power_[p] *= omega_ - 1;
 }
 
 // Pushes the pending irradiance of e and its descendants down to the leaves, where it becomes
@@ -184,10 +197,44 @@ const Rgb& ProgressiveShooting::pull_unshot(int index) {
     return unshot_[e];
 }
 
-void ProgressiveShooting::clear_unshot(int index) {
+void ProgressiveShooting::scale_unshot(int index, double factor) {
     const auto e = static_cast<std::size_t>(index);
-    unshot_[e] = Rgb{0, 0, 0};
-    for (const int child : tree_[e].children) clear_unshot(child);
+    for (double& u : unshot_[e]) u *= factor;
+    for (const int child : tree_[e].children) scale_unshot(child, factor);
+}
+
+// Shows each leaf with ρ·seen·ambient added (see ambient_term), then puts back the radiosity as
+// it was, to the bit: when snapshots fall must not change the solution.
+void ProgressiveShooting::publish_with_ambient(const std::function<void()>& publish) {
+    std::vector<std::size_t> leaves;
+    std::vector<double> area, seen;
+    for (std::size_t e = 0; e < tree_.size(); ++e) {
+        const Element& x = tree_[e];
+        if (x.cluster || !x.leaf()) continue;
+        leaves.push_back(e);
+        area.push_back(x.area_m2);
+        seen.push_back(std::min(1.0, factor_sum_[e] * scale_[e]));
+    }
+    Rgb ambient{0, 0, 0};
+    std::vector<double> unshot(leaves.size()), rho(leaves.size());
+    for (int c = 0; c < channels_; ++c) {
+        for (std::size_t k = 0; k < leaves.size(); ++k) {
+            unshot[k] = unshot_[leaves[k]][c];
+            rho[k] = tree_[leaves[k]].reflectance[c];
+        }
+        ambient[c] = ambient_term(unshot, rho, area, seen);
+    }
+    std::vector<Rgb> radiosity(leaves.size());
+    for (std::size_t k = 0; k < leaves.size(); ++k) {
+        Element& x = tree_[leaves[k]];
+        radiosity[k] = x.radiosity;
+        for (int c = 0; c < channels_; ++c)
+            x.radiosity[c] += x.reflectance[c] * seen[k] * ambient[c];
+    }
+    tree_.pull_up(channels_);
+    publish();
+    for (std::size_t k = 0; k < leaves.size(); ++k) tree_[leaves[k]].radiosity = radiosity[k];
+    tree_.pull_up(channels_);
 }
 
 }  // namespace radiant

@@ -1,10 +1,11 @@
 // Progressive shooting on the linked hierarchy (Cohen et al. 1988, on links after Hanrahan,
-// Salzman & Aupperle 1991): the root patch with the most unshot power sends it through the links
-// that leave its elements. A receiver keeps what it gets pending at its own level until its patch
-// shoots (then it is pushed down to its leaves and pulled up as their unshot average), so a shot
-// costs the shooter's links and elements alone. While light is concentrated — in the emitters,
-// then in what they light — this is where it pays: a scene without reflection is solved once
-// every emitter has shot, and a viewer sees the direct light after a fraction of a sweep.
+// Salzman & Aupperle 1991): the root patch with the most unshot power sends it, over-relaxed
+// (Feda & Purgathofer 1992), through the links that leave its elements. A receiver keeps what it
+// gets pending at its own level until its patch shoots (then it is pushed down to its leaves and
+// pulled up as their unshot average), so a shot costs the shooter's links and elements alone. While
+// light is concentrated — in the emitters, then in what they light — this is where it pays: a scene
+// without reflection is solved once every emitter has shot, and a viewer sees the direct light
+// after a fraction of a sweep.
 #pragma once
 
 #include <array>
@@ -21,20 +22,22 @@ class ProgressiveShooting {
 public:
     /// Every link's source is a surface element (a cluster's links pass on the light of the
     /// root patches its samples lie on, see link_refinement), so each belongs to one patch.
-    /// `scale[e]`: what leaf e's gathered factors are multiplied by (their completion);
-    /// `weight[e]`: Σ over the leaves below e of area × scale, the light per unit irradiance
-    /// that element e passes on to its leaves; `n_patches`: the root patches' count.
+    /// `factor_sum[e]`: the factors of leaf e's links and its ancestors' summed; `scale[e]`: what
+    /// they are multiplied by (their completion); `weight[e]`: Σ over the leaves below e of
+    /// area × scale, the light per unit irradiance that element e passes on to its leaves;
+    /// `n_patches`: the root patches' count.
     ProgressiveShooting(ElementTree& tree, const std::vector<Link>& links,
-                        const std::vector<double>& scale, const std::vector<double>& weight,
-                        std::size_t n_patches, int channels);
+                        const std::vector<double>& factor_sum, const std::vector<double>& scale,
+                        const std::vector<double>& weight, std::size_t n_patches, int channels);
 
     /// Lights the leaves with the source term (emission, reflected luminaire light), then shoots
     /// patch after patch, the one with the most unshot power first, until the shots have sent
     /// through as many links as there are (a sweep's work: by then light is spread, and sweeps,
     /// which run in parallel, do better), nothing is left unshot, or `control` says stop;
-    /// `publish` is called at its snapshot rate. Leaves every leaf's radiosity and `irradiance` as
-    /// shot so far (interior nodes pulled up) and returns the largest unshot radiosity of any leaf,
-    /// per channel: the residual of the system is M times it.
+    /// `publish` is called at its snapshot rate, with the ambient term of what is still unshot
+    /// added to the radiosity for the while (Cohen et al. 1988). Leaves every leaf's radiosity and
+    /// `irradiance` as shot so far (interior nodes pulled up) and returns the largest unshot
+    /// radiosity of any leaf, per channel: the residual of the system is M times it.
     std::array<double, 3> run(const SolverControl& control, const std::function<void()>& publish,
                               std::vector<Rgb>& irradiance);
 
@@ -43,13 +46,16 @@ private:
     void settle(int e, const Rgb& down, std::vector<Rgb>& irradiance);
     void settle_all(std::vector<Rgb>& irradiance);
     const Rgb& pull_unshot(int e);
-    void clear_unshot(int e);
+    void scale_unshot(int e, double factor);
+    void publish_with_ambient(const std::function<void()>& publish);
 
     ElementTree& tree_;
     const std::vector<Link>& links_;
+    const std::vector<double>& factor_sum_;
     const std::vector<double>& scale_;
     const std::vector<double>& weight_;
     int channels_;
+    double omega_ = 1;                     // over-relaxation (see over_relaxation)
     std::vector<int> root_of_patch_;       // −1 for patches with no element (hidden)
     std::vector<std::size_t> first_sent_;  // links from patch p: sent_[first_sent_[p] … [p + 1])
     std::vector<std::size_t> sent_;

@@ -18,12 +18,12 @@ double shooting_relaxation(const LinearSystem& s) {
         area += s.area_m2[i];
         rho_area += s.area_m2[i] * rho;
     }
-    return area > 0 ? std::min(1.5, 1.0 + 0.5 * rho_area / area) : 1.0;
+    return over_relaxation(area > 0 ? rho_area / area : 0);
 }
 
 SolverOutcome progressive_shooting(const LinearSystem& s, const std::array<ContractionNorms, 3>& q,
                                    const ShooterColumn& shooter_column, std::size_t check_every,
-                                   const SolverControl& control,
+                                   const std::vector<double>& seen, const SolverControl& control,
                                    std::array<std::vector<double>, 3>* gathered) {
     SolverOutcome out;
     const std::size_t n = s.n;
@@ -76,8 +76,13 @@ SolverOutcome progressive_shooting(const LinearSystem& s, const std::array<Contr
                 std::array<std::vector<double>, 3> b;
                 for (int c = 0; c < channels; ++c) {
                     const auto ci = static_cast<std::size_t>(c);
+                    const auto& rho = s.reflectance[ci];
+                    const double ambient = ambient_term(unshot[ci], rho, s.area_m2, seen);
                     b[ci].resize(n);
-                    for (std::size_t i = 0; i < n; ++i) b[ci][i] = shot[ci][i] + unshot[ci][i];
+                    for (std::size_t i = 0; i < n; ++i) {
+                        const double seen_i = seen.empty() ? 1.0 : seen[i];
+                        b[ci][i] = shot[ci][i] + unshot[ci][i] + rho[i] * seen_i * ambient;
+                    }
                 }
                 control.snapshot(b);
             }
@@ -138,11 +143,15 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t j) {
         for (std::size_t i = 0; i < n; ++i) ft[j * n + i] = s.f(i, j);
     });
+    std::vector<double> row_sum(n, 0.0);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        for (std::size_t j = 0; j < n; ++j) row_sum[i] += s.f(i, j);
+    });
     std::array<ContractionNorms, 3> q;
     for (int c = 0; c < s.channels; ++c) q[static_cast<std::size_t>(c)] = contraction_norms(s, c);
     // The O(n) estimate is cheap next to a shot's O(n) update only every few shots.
     return progressive_shooting(
-        s, q, [&](std::size_t shooter) { return &ft[shooter * n]; }, n / 16, control);
+        s, q, [&](std::size_t shooter) { return &ft[shooter * n]; }, n / 16, row_sum, control);
 }
 
 ContractionNorms reciprocal_norms(const LinearSystem& s, int channel, double row_sum) {
@@ -176,8 +185,9 @@ SolverOutcome shoot_matrix_free(const LinearSystem& s, const Transport& transpor
             std::count_if(row.begin(), row.end(), [](float f) { return f > 0; }));
         return column.data();
     };
-    // A shot computes a whole row of factors: the O(n) estimate costs nothing next to it.
-    return progressive_shooting(s, q, shooter_column, 1, control, &gathered);
+    // A shot computes a whole row of factors: the O(n) estimate costs nothing next to it. No
+    // row sums are known before every patch has shot: snapshots take the scene as closed.
+    return progressive_shooting(s, q, shooter_column, 1, {}, control, &gathered);
 }
 
 }  // namespace radiant

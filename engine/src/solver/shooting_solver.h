@@ -1,7 +1,6 @@
 // Progressive refinement (Cohen, Chen, Wallace & Greenberg 1988) in its residual form, i.e.
 // Southwell iteration (Gortler, Cohen & Slusallek 1993): the patch with the most unshot power
-// shoots it to every other patch. Over-relaxation (ω > 1) shoots a little more than is unshot,
-// anticipating what the patch will receive back; unshot values may then turn negative.
+// shoots it to every other patch, over-relaxed (see over_relaxation).
 //
 // Two sources of the shooter's factors share one loop: the dense form-factor matrix
 // (ShootingSolver), or the shooter's own factors computed when it shoots, with nothing stored
@@ -23,20 +22,21 @@ public:
     SolverOutcome solve(const LinearSystem& system, const SolverControl& control) const override;
 };
 
-/// ω from the mean reflectance: 1 + ρ̄/2, at most 1.5 (Feda & Purgathofer 1992 report gains
-/// growing with reflectivity; larger values oscillate).
+/// ω (see over_relaxation) from the system's area-weighted mean reflectance.
 double shooting_relaxation(const LinearSystem& system);
 
 /// Column `shooter` of F: F(i←shooter) for every receiver i (n values, valid until the next call).
 using ShooterColumn = std::function<const float*(std::size_t shooter)>;
 
 /// The Southwell loop. `norms` (per channel) bound M = diag(ρ)F for the error estimate; the
-/// estimate is refreshed every `check_every` shots. With `gathered`, F·(shot radiosity) is
-/// accumulated there per channel (the irradiance from reflected light, without a matrix).
+/// estimate is refreshed every `check_every` shots. Snapshots show the radiosity with the
+/// ambient term, `seen` being each patch's factor sum (empty: a closed scene). With `gathered`,
+/// F·(shot radiosity) is accumulated there per channel (the irradiance from reflected light,
+/// without a matrix).
 SolverOutcome progressive_shooting(const LinearSystem& system,
                                    const std::array<ContractionNorms, 3>& norms,
                                    const ShooterColumn& column, std::size_t check_every,
-                                   const SolverControl& control,
+                                   const std::vector<double>& seen, const SolverControl& control,
                                    std::array<std::vector<double>, 3>* gathered = nullptr);
 
 /// Norms of M for a system whose every row of F sums to at most `row_sum` (closed: 1): with

@@ -1,5 +1,7 @@
 #include "solver/solver.h"
 
+#include <algorithm>
+
 #include "solver/direct_solver.h"
 #include "solver/gathering_solvers.h"
 #include "solver/shooting_solver.h"
@@ -20,17 +22,23 @@ double area_weighted_sum(const std::vector<double>& values, const std::vector<do
     return s;
 }
 
+double over_relaxation(double mean_reflectance) {
+    return std::clamp(1.0 + 0.5 * mean_reflectance, 1.0, 1.5);
+}
+
 double ambient_term(const std::vector<double>& unshot, const std::vector<double>& reflectance,
-                    const std::vector<double>& area) {
-    double total_area = 0, rho_area = 0, unshot_area = 0;
+                    const std::vector<double>& area, const std::vector<double>& seen) {
+    double seen_area = 0, rho_seen_area = 0, unshot_seen_area = 0;
     for (std::size_t i = 0; i < area.size(); ++i) {
-        total_area += area[i];
-        rho_area += reflectance[i] * area[i];
-        unshot_area += unshot[i] * area[i];
+        const double s = seen.empty() ? 1.0 : seen[i];
+        seen_area += s * area[i];
+        rho_seen_area += s * s * reflectance[i] * area[i];
+        unshot_seen_area += s * unshot[i] * area[i];
     }
-    if (!(total_area > 0)) return 0;
-    const double mean_rho = rho_area / total_area;
-    return unshot_area / total_area / (1 - mean_rho);
+    if (!(seen_area > 0)) return 0;
+    // The share of reflected light that lands on a surface again: ρ̄ in a closed scene.
+    const double kept = rho_seen_area / seen_area;
+    return kept < 1 ? unshot_seen_area / seen_area / (1 - kept) : 0;
 }
 
 }  // namespace radiant

@@ -65,10 +65,19 @@ std::unique_ptr<Solver> make_solver(std::string_view name);
 /// Σ_i A_i B_i over one channel.
 double area_weighted_sum(const std::vector<double>& values, const std::vector<double>& area);
 
+/// Over-relaxation factor ω for shooting from the area-weighted mean reflectance: 1 + ρ̄/2, at
+/// most 1.5 (Feda & Purgathofer 1992 report gains growing with reflectivity; larger values
+/// oscillate). A shot sends ω times what is unshot, anticipating what the patch will receive
+/// back; unshot values may then turn negative.
+double over_relaxation(double mean_reflectance);
+
 /// Ambient term of Cohen et al. 1988 for display while shooting: the unshot exitance spread
-/// over the scene and multiplied by the interreflection factor 1/(1 − ρ̄), ρ̄ area-weighted.
-/// Display only; it never enters the solution.
+/// over the scene and multiplied by the interreflection factor 1/(1 − ρ̄), ρ̄ area-weighted;
+/// patch i is shown as B_i + ρ_i·seen_i·ambient. `seen` (per patch, the share of its hemisphere
+/// that surfaces cover: its factors' sum; empty: 1, a closed scene) weights the areas, so that in
+/// an open scene light that will escape is not shown as arriving. Display only; it never enters
+/// the solution.
 double ambient_term(const std::vector<double>& unshot, const std::vector<double>& reflectance,
-                    const std::vector<double>& area);
+                    const std::vector<double>& area, const std::vector<double>& seen = {});
 
 }  // namespace radiant
