@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cube_ceiling.h"
+#include "formfactor/point_polygon.h"
 #include "radiant/proto/scene_json.h"
 #include "scene_builder.h"
 #include "scene_files.h"
@@ -470,6 +471,78 @@ INSTANTIATE_TEST_SUITE_P(Wall, SealedNeighbour,
                                              : "thickness_" +
                                                    std::to_string(std::lround(c.wall * 100)) + "cm";
                              return wall + "_" + angle_name(c.degrees);
+                         });
+
+// A window: a black 6 × 5 × 3 m room whose south wall has an open 2 × 0.6 m window, a 1.2 ×
+// 0.6 m ceiling panel and, under its edge, a desk top that sees out through the window over
+// 1.3 % of its hemisphere (cosine-weighted). The desk top's light is the panel's alone: E = M·F,
+// Lambert's formula integrated over it. A patch that took the window for a wall would complete its
+// factors to sum to 1 and so add that 1.3 % (+10 % on a classroom's desks before enclosure
+// tests pooled a piece's rays).
+Scene room_with_window() {
+    Scene scene;
+    scene.name = "room-with-window";
+    scene.materials = {testing::gray("black", 0), testing::gray("panel", 0, 1000)};
+    scene.surfaces = testing::room_without_ceiling(6, 5, 3, "black");
+    std::erase_if(scene.surfaces, [](const Surface& s) { return s.name == "wall-south"; });
+    // The south wall (y = 0, facing +y) around the window x ∈ [2, 4], z ∈ [1.5, 2.1].
+    auto south = [&](const std::string& name, double x0, double x1, double z0, double z1) {
+        scene.surfaces.push_back(testing::polygon_surface(
+            name, "black", testing::rect({x0, 0, z0}, {0, 0, z1 - z0}, {x1 - x0, 0, 0})));
+    };
+    south("south-left", 0, 2, 0, 3);
+    south("south-right", 4, 6, 0, 3);
+    south("sill", 2, 4, 0, 1.5);
+    south("lintel", 2, 4, 2.1, 3);
+    scene.surfaces.push_back(
+        testing::polygon_surface("ceiling", "black", testing::ceiling_rect(0, 6, 0, 5, 3)));
+    scene.surfaces.push_back(testing::polygon_surface(
+        "panel", "panel", testing::ceiling_rect(2.4, 3.6, 3.1, 3.7, 2.99)));
+    scene.surfaces.push_back(testing::polygon_surface(
+        "desk-top", "black", testing::rect({2.4, 2.5, 0.72}, {1.2, 0, 0}, {0, 0.6, 0})));
+    return scene;
+}
+
+struct WindowCase {
+    std::string method;
+    double tolerance;
+};
+
+void PrintTo(const WindowCase& c, std::ostream* os) { *os << c.method << " at " << c.tolerance; }
+
+class WindowedRoom : public ::testing::TestWithParam<WindowCase> {};
+
+TEST_P(WindowedRoom, DeskTopGetsThePanelsLightAndNoMore) {
+    const auto& [method, tolerance] = GetParam();
+    Scene scene = room_with_window();
+    scene.settings.method = method;
+    scene.settings.tolerance = tolerance;
+    const Result r = solve_default(scene);
+    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+    const Polygon panel = testing::ceiling_rect(2.4, 3.6, 3.1, 3.7, 2.99);
+    constexpr int kPoints = 40;
+    double sum = 0;
+    for (int i = 0; i < kPoints; ++i) {
+        for (int j = 0; j < kPoints; ++j) {
+            const Vec3 x{2.4 + 1.2 * (i + 0.5) / kPoints, 2.5 + 0.6 * (j + 0.5) / kPoints, 0.72};
+            sum += front_point_to_polygon_factor(x, {0, 0, 1}, panel, {0, 0, -1});
+        }
+    }
+    const double exact = 1000 * sum / (kPoints * kPoints);
+    const auto* desk = find_surface(r, "desk-top");
+    ASSERT_NE(desk, nullptr);
+    EXPECT_NEAR(desk->average_irradiance / exact, 1, 0.003)
+        << desk->average_irradiance << " lx against " << exact << "; " << describe(r);
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, WindowedRoom,
+                         ::testing::Values(WindowCase{"hierarchical", 0.01},
+                                           WindowCase{"hierarchical", 0.003},
+                                           WindowCase{"direct", 0.01}),
+                         [](const auto& param_info) {
+                             const auto& c = param_info.param;
+                             return c.method + "_" +
+                                    std::to_string(std::lround(c.tolerance * 1000)) + "e_3";
                          });
 
 // The zero-thickness partition as a user writes it: "two_sided" must reach the engine.

@@ -58,29 +58,62 @@ double mean_free_path(const PreparedScene& scene, const Visibility& visibility,
 std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& patches,
                                    const Visibility& visibility,
                                    std::span<const int> triangle_piece, std::uint64_t seed,
-                                   int rays_per_patch) {
-    std::vector<char> enclosed(patches.size(), 0);
+                                   int min_rays_per_patch, int min_rays_per_piece) {
+    std::vector<int> piece_patches(scene.pieces.size(), 0);
+    for (std::size_t i = 0; i < patches.size(); ++i)
+        ++piece_patches[static_cast<std::size_t>(patches.patch(i).piece)];
     const double eps = visibility.epsilon();
     const double reach = 4 * scene.diagonal_m + 1;
+    // What a patch's rays found: only fronts (0), the back of a one-sided piece (1: light
+    // does not come back from there, but that is local, as under a box standing on the floor),
+    // or nothing (2: an opening, which the whole piece sees).
+    std::vector<char> found(patches.size(), 0);
     tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t i) {
         const PatchGeometry& p = patches.patch(i);
+        const int share =
+            (min_rays_per_piece + piece_patches[static_cast<std::size_t>(p.piece)] - 1) /
+            piece_patches[static_cast<std::size_t>(p.piece)];
+        // Directions on a jittered g × g grid of the hemisphere's cosine-weighted square.
+        const auto g = static_cast<int>(
+            std::ceil(std::sqrt(static_cast<double>(std::max(min_rays_per_patch, share)))));
+        const int n = g * g;
         SampleStream rng(seed, 0x656e636cull, i);
-        std::vector<double> u(2 * static_cast<std::size_t>(rays_per_patch));
+        std::vector<double> u(2 * static_cast<std::size_t>(n));
         for (double& v : u) v = rng.next();
-        const std::vector<Vec3> origins = stratified_points(p.vertices, rays_per_patch, u);
-        for (const Vec3& x : origins) {
-            const Vec3 dir = cosine_direction(p.normal, rng.next(), rng.next());
-            const int hit = visibility.first_hit(x + p.normal * eps, dir, reach);
-            if (hit < 0) return;
+        const std::vector<Vec3> origins = stratified_points(p.vertices, n, u);
+        // Cells in random order, so that a point's place on the patch and its ray's direction
+        // are not correlated.
+        std::vector<int> cell(static_cast<std::size_t>(n));
+        for (int k = 0; k < n; ++k) cell[static_cast<std::size_t>(k)] = k;
+        for (int k = n - 1; k > 0; --k) {
+            const auto j = static_cast<int>(rng.next() * (k + 1));
+            std::swap(cell[static_cast<std::size_t>(k)], cell[static_cast<std::size_t>(j)]);
+        }
+        for (int k = 0; k < n; ++k) {
+            const int c = cell[static_cast<std::size_t>(k)];
+            const Vec3 dir =
+                cosine_direction(p.normal, (c % g + rng.next()) / g, (c / g + rng.next()) / g);
+            const Vec3 x = origins[static_cast<std::size_t>(k)] + p.normal * eps;
+            const int hit = visibility.first_hit(x, dir, reach);
+            if (hit < 0) {
+                found[i] = 2;
+                return;
+            }
             const Piece& q = scene.pieces[static_cast<std::size_t>(
                 triangle_piece[static_cast<std::size_t>(hit)])];
             if (dot(dir, q.normal) >= 0 &&
                 !scene.materials[static_cast<std::size_t>(q.material)].two_sided) {
-                return;
+                found[i] = 1;
             }
         }
-        enclosed[i] = 1;
     });
+    std::vector<char> piece_open(scene.pieces.size(), 0);
+    for (std::size_t i = 0; i < patches.size(); ++i)
+        if (found[i] == 2) piece_open[static_cast<std::size_t>(patches.patch(i).piece)] = 1;
+    std::vector<char> enclosed(patches.size(), 0);
+    for (std::size_t i = 0; i < patches.size(); ++i)
+        enclosed[i] =
+            found[i] == 0 && !piece_open[static_cast<std::size_t>(patches.patch(i).piece)];
     return enclosed;
 }
 

@@ -12,13 +12,19 @@
 
 namespace radiant {
 
-/// enclosed[i] = 1 when `rays_per_patch` cosine-distributed rays from stratified points of
-/// patch i all land on a patch front (a one-sided piece's back, or nothing, makes it 0).
-/// `triangle_piece` maps the visibility's triangles to pieces. Deterministic in `seed`.
+/// enclosed[i] = 1 when every ray cast from patch i lands on a patch front (the back of a
+/// one-sided piece makes it 0), and no ray from any patch of its piece escapes the scene (an
+/// opening: what one patch sees through it, its neighbours see too). Each patch casts at least
+/// `min_rays_per_patch` rays and each piece at least `min_rays_per_piece`, from stratified
+/// points in cosine-distributed directions stratified over the hemisphere, so an opening seen
+/// over a share F of it goes unnoticed only when F is well under 1/min_rays_per_piece. That
+/// matters: an enclosed patch's factors are completed to sum to 1, so an opening taken for a
+/// wall would add its F to all the patch receives. `triangle_piece` maps the visibility's
+/// triangles to pieces. Deterministic in `seed`.
 std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& patches,
                                    const Visibility& visibility,
                                    std::span<const int> triangle_piece, std::uint64_t seed,
-                                   int rays_per_patch = 16);
+                                   int min_rays_per_patch = 16, int min_rays_per_piece = 256);
 
 /// Mean distance (m) from the surfaces to the next surface along cosine-distributed rays:
 /// the mean free path of light between bounces, over which radiosity varies. It equals 4V/S in
