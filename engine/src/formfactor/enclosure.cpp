@@ -55,6 +55,71 @@ double mean_free_path(const PreparedScene& scene, const Visibility& visibility,
     return hits > 0 ? sum / hits : scene.diagonal_m;
 }
 
+namespace {
+
+// What rays from a patch found: how many were cast, escaped the scene, or hit the back of a
+// one-sided piece (light comes back from neither).
+struct HemisphereSurvey {
+    int cast = 0, escaped = 0, backs = 0;
+};
+
+// Rays after which front_shares judges whether a patch's share is worth measuring.
+constexpr int kProbeRays = 64;
+
+// Casts about `rays` rays (rounded up to g²) from stratified points of patch i, in
+// cosine-distributed directions on a jittered g × g grid of the hemisphere's cosine-weighted
+// square (cells in random order, so any first k are a fair sample); with `stop_at_first`,
+// stops at the first that does not end on a front, and after kProbeRays if fewer than
+// `least_share` of them did.
+HemisphereSurvey survey_hemisphere(const PreparedScene& scene, const PatchMesh& patches,
+                                   const Visibility& visibility,
+                                   std::span<const int> triangle_piece, std::uint64_t seed,
+                                   std::size_t i, int rays, bool stop_at_first,
+                                   double least_share = 0) {
+    const PatchGeometry& p = patches.patch(i);
+    const double eps = visibility.epsilon();
+    const double reach = 4 * scene.diagonal_m + 1;
+    const auto g = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(rays))));
+    const int n = g * g;
+    SampleStream rng(seed, 0x656e636cull, i, static_cast<std::uint64_t>(n));
+    std::vector<double> u(2 * static_cast<std::size_t>(n));
+    for (double& v : u) v = rng.next();
+    const std::vector<Vec3> origins = stratified_points(p.vertices, n, u);
+    // Cells in random order, so that a point's place on the patch and its ray's direction are
+    // not correlated.
+    std::vector<int> cell(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) cell[static_cast<std::size_t>(k)] = k;
+    for (int k = n - 1; k > 0; --k) {
+        const auto j = static_cast<int>(rng.next() * (k + 1));
+        std::swap(cell[static_cast<std::size_t>(k)], cell[static_cast<std::size_t>(j)]);
+    }
+    HemisphereSurvey out;
+    for (int k = 0; k < n; ++k) {
+        if (k == kProbeRays && out.cast - out.escaped - out.backs < least_share * out.cast) break;
+        const int c = cell[static_cast<std::size_t>(k)];
+        const Vec3 dir =
+            cosine_direction(p.normal, (c % g + rng.next()) / g, (c / g + rng.next()) / g);
+        const Vec3 x = origins[static_cast<std::size_t>(k)] + p.normal * eps;
+        const int hit = visibility.first_hit(x, dir, reach);
+        ++out.cast;
+        if (hit < 0) {
+            ++out.escaped;
+            if (stop_at_first) break;
+            continue;
+        }
+        const Piece& q =
+            scene.pieces[static_cast<std::size_t>(triangle_piece[static_cast<std::size_t>(hit)])];
+        if (dot(dir, q.normal) >= 0 &&
+            !scene.materials[static_cast<std::size_t>(q.material)].two_sided) {
+            ++out.backs;
+            if (stop_at_first) break;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
 std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& patches,
                                    const Visibility& visibility,
                                    std::span<const int> triangle_piece, std::uint64_t seed,
@@ -62,59 +127,44 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
     std::vector<int> piece_patches(scene.pieces.size(), 0);
     for (std::size_t i = 0; i < patches.size(); ++i)
         ++piece_patches[static_cast<std::size_t>(patches.patch(i).piece)];
-    const double eps = visibility.epsilon();
-    const double reach = 4 * scene.diagonal_m + 1;
-    // What a patch's rays found: only fronts (0), the back of a one-sided piece (1: light
-    // does not come back from there, but that is local, as under a box standing on the floor),
-    // or nothing (2: an opening, which the whole piece sees).
-    std::vector<char> found(patches.size(), 0);
+    // A back of a one-sided piece is local (as under a box standing on the floor): it marks its
+    // own patch. An escape is an opening, which the whole piece sees (a patch that found a back
+    // looks no further: its piece's other patches see the opening as well).
+    std::vector<HemisphereSurvey> found(patches.size());
     tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t i) {
-        const PatchGeometry& p = patches.patch(i);
-        const int share =
-            (min_rays_per_piece + piece_patches[static_cast<std::size_t>(p.piece)] - 1) /
-            piece_patches[static_cast<std::size_t>(p.piece)];
-        // Directions on a jittered g × g grid of the hemisphere's cosine-weighted square.
-        const auto g = static_cast<int>(
-            std::ceil(std::sqrt(static_cast<double>(std::max(min_rays_per_patch, share)))));
-        const int n = g * g;
-        SampleStream rng(seed, 0x656e636cull, i);
-        std::vector<double> u(2 * static_cast<std::size_t>(n));
-        for (double& v : u) v = rng.next();
-        const std::vector<Vec3> origins = stratified_points(p.vertices, n, u);
-        // Cells in random order, so that a point's place on the patch and its ray's direction
-        // are not correlated.
-        std::vector<int> cell(static_cast<std::size_t>(n));
-        for (int k = 0; k < n; ++k) cell[static_cast<std::size_t>(k)] = k;
-        for (int k = n - 1; k > 0; --k) {
-            const auto j = static_cast<int>(rng.next() * (k + 1));
-            std::swap(cell[static_cast<std::size_t>(k)], cell[static_cast<std::size_t>(j)]);
-        }
-        for (int k = 0; k < n; ++k) {
-            const int c = cell[static_cast<std::size_t>(k)];
-            const Vec3 dir =
-                cosine_direction(p.normal, (c % g + rng.next()) / g, (c / g + rng.next()) / g);
-            const Vec3 x = origins[static_cast<std::size_t>(k)] + p.normal * eps;
-            const int hit = visibility.first_hit(x, dir, reach);
-            if (hit < 0) {
-                found[i] = 2;
-                return;
-            }
-            const Piece& q = scene.pieces[static_cast<std::size_t>(
-                triangle_piece[static_cast<std::size_t>(hit)])];
-            if (dot(dir, q.normal) >= 0 &&
-                !scene.materials[static_cast<std::size_t>(q.material)].two_sided) {
-                found[i] = 1;
-            }
-        }
+        const int count = piece_patches[static_cast<std::size_t>(patches.patch(i).piece)];
+        const int rays = std::max(min_rays_per_patch, (min_rays_per_piece + count - 1) / count);
+        found[i] =
+            survey_hemisphere(scene, patches, visibility, triangle_piece, seed, i, rays, true);
     });
     std::vector<char> piece_open(scene.pieces.size(), 0);
     for (std::size_t i = 0; i < patches.size(); ++i)
-        if (found[i] == 2) piece_open[static_cast<std::size_t>(patches.patch(i).piece)] = 1;
+        if (found[i].escaped > 0) piece_open[static_cast<std::size_t>(patches.patch(i).piece)] = 1;
     std::vector<char> enclosed(patches.size(), 0);
-    for (std::size_t i = 0; i < patches.size(); ++i)
-        enclosed[i] =
-            found[i] == 0 && !piece_open[static_cast<std::size_t>(patches.patch(i).piece)];
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+        enclosed[i] = found[i].escaped == 0 && found[i].backs == 0 &&
+                      !piece_open[static_cast<std::size_t>(patches.patch(i).piece)];
+    }
     return enclosed;
+}
+
+std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& patches,
+                                 const Visibility& visibility, std::span<const int> triangle_piece,
+                                 std::uint64_t seed, std::span<const char> enclosed, double wanted,
+                                 int rays_per_patch, std::size_t max_rays) {
+    std::vector<double> share(patches.size(), 1.0);
+    const auto open = static_cast<std::size_t>(std::count(enclosed.begin(), enclosed.end(), 0));
+    if (open == 0) return share;
+    const int rays = std::max(
+        kMinFrontShareRays,
+        std::min(rays_per_patch, static_cast<int>(max_rays / std::max<std::size_t>(open, 1))));
+    tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t i) {
+        if (enclosed[i]) return;
+        const HemisphereSurvey s = survey_hemisphere(scene, patches, visibility, triangle_piece,
+                                                     seed, i, rays, false, wanted / 2);
+        share[i] = 1 - static_cast<double>(s.escaped + s.backs) / s.cast;
+    });
+    return share;
 }
 
 }  // namespace radiant

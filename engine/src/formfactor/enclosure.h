@@ -26,6 +26,20 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
                                    std::span<const int> triangle_piece, std::uint64_t seed,
                                    int min_rays_per_patch = 16, int min_rays_per_piece = 256);
 
+/// Fewest rays front_shares casts from a patch, whatever its budget.
+constexpr int kMinFrontShareRays = 256;
+
+/// Per patch, the share of its cosine-weighted hemisphere that ends on a surface front, from
+/// `rays_per_patch` stratified rays (as enclosed_patches casts them; fewer, down to
+/// kMinFrontShareRays, when all would exceed `max_rays`); 1 where `enclosed`. It is what a
+/// patch's factors should sum to: the hierarchical solver completes those that see an opening
+/// or a back to it. A share found to be well under `wanted` after a first 64 rays (a patch
+/// inside furniture, under a box) is left at that rough estimate.
+std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& patches,
+                                 const Visibility& visibility, std::span<const int> triangle_piece,
+                                 std::uint64_t seed, std::span<const char> enclosed, double wanted,
+                                 int rays_per_patch = 1024, std::size_t max_rays = 1u << 23);
+
 /// Mean distance (m) from the surfaces to the next surface along cosine-distributed rays:
 /// the mean free path of light between bounces, over which radiosity varies. It equals 4V/S in
 /// a convex room (Cauchy) and does not depend on the scene's orientation. Rays that escape are

@@ -18,10 +18,12 @@ constexpr double kClosedEscapeShare = 1e-4;
 }  // namespace
 
 HierarchicalSystem::HierarchicalSystem(ElementTree& tree, const std::vector<Link>& links,
-                                       const std::vector<char>& enclosed_patch, int channels)
+                                       const std::vector<char>& enclosed_patch,
+                                       const std::vector<double>& front_share, int channels)
     : tree_(tree),
       links_(links),
       enclosed_patch_(enclosed_patch),
+      front_share_(front_share),
       channels_(channels),
       irradiance_(tree.size(), Rgb{0, 0, 0}),
       change_(tree.size(), Rgb{0, 0, 0}) {
@@ -70,12 +72,18 @@ HierarchicalSystem::HierarchicalSystem(ElementTree& tree, const std::vector<Link
     measure_defects();
 }
 
-// A closed leaf's factors are completed to sum to 1; no leaf's may sum to more — light from
-// everything it sees is at most all its hemisphere — though a cluster's disk kernels, or a
-// near-singular source, can make it look so, and a sum above 1/ρ would let light grow unbounded.
+// A leaf's factors are completed to sum to the share of its hemisphere that ends on surface
+// fronts: 1 in a closed enclosure, less where it sees an opening or the back of a one-sided
+// panel. Its links' own sums are off by a few per cent (sampled kernels, links made at other
+// levels); the rays' share is known far better, except where little of the hemisphere is
+// covered (its error relative to the share grows), so a leaf that sees mostly nothing keeps its
+// own sum. No leaf's may sum to more than 1 — light from everything it sees is at most all its
+// hemisphere — though a cluster's disk kernels, or a near-singular source, can make it look so,
+// and a sum above 1/ρ would let light grow unbounded.
 double HierarchicalSystem::completion(const Element& leaf, double factor_sum) const {
-    const bool closed = enclosed_patch_[static_cast<std::size_t>(leaf.patch)] != 0;
-    return (closed && factor_sum > 0) || factor_sum > 1 ? 1 / factor_sum : 1;
+    const double share = front_share_[static_cast<std::size_t>(leaf.patch)];
+    if (factor_sum > 0 && completes(share)) return share / factor_sum;
+    return factor_sum > 1 ? 1 / factor_sum : 1;
 }
 
 // Root patches that exchange light (through links, either way) form parts: light stays in its

@@ -23,13 +23,21 @@ struct HierarchicalOutcome {
     double conservation_defect = 0;
 };
 
+/// The solver completes the factor sums of a patch whose hemisphere ends on surface fronts
+/// over at least this share of it (see HierarchicalSystem::completion).
+constexpr double kMinFrontShare = 0.5;
+inline bool completes(double front_share) { return front_share >= kMinFrontShare; }
+
 class HierarchicalSystem {
 public:
     /// `enclosed_patch[p]` marks root patches in a closed enclosure: their leaves' gathered
     /// factors are completed to exactly 1 (as the dense transport does point by point), since
-    /// an error δ in that sum costs ρδ/(1−ρ) and ρ may be 0.999.
+    /// an error δ in that sum costs ρδ/(1−ρ) and ρ may be 0.999. `front_share[p]`: the share of
+    /// each root patch's hemisphere that ends on surface fronts (1 where enclosed), what the
+    /// others' are completed to (see completion()).
     HierarchicalSystem(ElementTree& tree, const std::vector<Link>& links,
-                       const std::vector<char>& enclosed_patch, int channels);
+                       const std::vector<char>& enclosed_patch,
+                       const std::vector<double>& front_share, int channels);
 
     /// Shoots, then sweeps until the bound meets `control.tolerance`, the deadline passes or it
     /// is cancelled; `publish` is called at the snapshot rate.
@@ -61,6 +69,7 @@ private:
     const std::vector<Link>& links_;
     std::vector<std::size_t> first_link_;  // links of element e: [first_link_[e], first_link_[e+1])
     const std::vector<char>& enclosed_patch_;
+    const std::vector<double>& front_share_;
     int channels_;
     std::vector<Rgb> irradiance_;
     std::vector<Rgb> change_;         // each leaf's change in the last sweep

@@ -162,11 +162,11 @@ private:
         return open.factor > 0 ? mean * std::min(seen.factor / open.factor, 1.0) : mean;
     }
 
-    // A receiver in a closed enclosure has its factor sum completed to 1 by the solver, which
-    // is exact only while all its links average the kernel over the same points.
+    // A receiver whose factor sum the solver completes (to 1 in a closed enclosure), which is
+    // exact only while all its links average the kernel over the same points.
     bool closed(const Element& r) const {
         const auto patch = static_cast<std::size_t>(r.patch);
-        return patch < criteria_.enclosed_patch.size() && criteria_.enclosed_patch[patch] != 0;
+        return patch < criteria_.completed_patch.size() && criteria_.completed_patch[patch] != 0;
     }
 
     double receiver_weight(const Element& r) const {

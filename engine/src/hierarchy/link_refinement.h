@@ -36,9 +36,9 @@ struct RefinementCriteria {
     double ambient_irradiance = 0;  ///< guess of the reflected light, for new elements' estimates
     int channels = 1;
     std::size_t max_bytes = 0;  ///< memory budget of the tree and links; 0: none
-    /// Root patches in a closed enclosure (see HierarchicalSystem): their near-singular links
-    /// keep the mean over their points, which the solver's completion of factor sums assumes.
-    std::span<const char> enclosed_patch;
+    /// Root patches whose factor sums the solver completes (see HierarchicalSystem): their
+    /// near-singular links keep the mean over their points, which completion assumes.
+    std::span<const char> completed_patch;
     /// Per root patch, in (0, 1]: its share of the sensors' importance (see sensor_importance.h);
     /// links into it may carry power_epsilon_lm / weight uncertain. Empty: all 1.
     std::span<const double> receiver_weight;

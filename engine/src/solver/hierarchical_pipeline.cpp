@@ -59,6 +59,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         scene, {kRootEdgeFactor * patch_edge, kMaxRootPatches, 0.5 * kMinEdgeFactor * patch_edge});
     const std::vector<char> enclosed =
         enclosed_patches(scene, roots, visibility, input.triangle_piece, options_.seed);
+    const std::vector<double> front_share = front_shares(
+        scene, roots, visibility, input.triangle_piece, options_.seed, enclosed, kMinFrontShare);
+    std::vector<char> completed(roots.size());
+    for (std::size_t i = 0; i < roots.size(); ++i) completed[i] = completes(front_share[i]);
     ElementTree tree(scene, roots, visibility, kMinEdgeFactor * patch_edge, options_.seed);
     rays_ += tree.light_from(0);
 
@@ -105,7 +109,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     criteria.seed = options_.seed;
     criteria.ambient_irradiance = ambient;
     criteria.channels = channels;
-    criteria.enclosed_patch = enclosed;
+    criteria.completed_patch = completed;
     // In a convex scene (a plain room, a sphere) whatever faces each other sees each other.
     const bool unoccluded = nothing_can_occlude(scene);
     criteria.unoccluded = unoccluded;
@@ -132,7 +136,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     elements_ = tree.leaf_count();
     links_ = linked.links.size();
 
-    HierarchicalSystem system(tree, linked.links, enclosed, channels);
+    HierarchicalSystem system(tree, linked.links, enclosed, front_share, channels);
     // Sensors gather down the tree from the current radiosity, opening nodes that could add more
     // than a share of the tolerance × the mean irradiance (`coarsening` times that for previews).
     auto gather_sensors = [&](double coarsening) {
