@@ -18,7 +18,6 @@ double total_area(const std::vector<std::vector<Vec3>>& pieces) {
     return a;
 }
 
-
 double signed_area(const std::vector<Vec3>& p, const Vec3& n) {
     double a = 0;
     for (std::size_t k = 1; k + 1 < p.size(); ++k)

@@ -24,7 +24,7 @@ Frame make_frame(const Vec3& normal) {
 }
 
 class Accumulator {
-  public:
+public:
     Accumulator(const Vec3& origin, const Visibility& vis, std::span<const int> triangle_patch,
                 std::vector<double>& factors)
         : origin_(origin), vis_(vis), triangle_patch_(triangle_patch), factors_(factors) {}
@@ -39,7 +39,7 @@ class Accumulator {
         }
     }
 
-  private:
+private:
     Vec3 origin_;
     const Visibility& vis_;
     std::span<const int> triangle_patch_;

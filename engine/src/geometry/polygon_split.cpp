@@ -19,8 +19,10 @@ double cross2(const Point2& o, const Point2& a, const Point2& b) {
 std::vector<Point2> project(std::span<const Vec3> polygon, const Vec3& n) {
     const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
     int drop = 2;
-    if (ax >= ay && ax >= az) drop = 0;
-    else if (ay >= az) drop = 1;
+    if (ax >= ay && ax >= az)
+        drop = 0;
+    else if (ay >= az)
+        drop = 1;
     const int iu = (drop + 1) % 3, iv = (drop + 2) % 3;
     const double sign = n[drop] >= 0 ? 1.0 : -1.0;
     std::vector<Point2> out;

@@ -47,16 +47,17 @@ Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a + (b - a) * t; }
 
 // A convex quad as an nu × nv grid of sub-quads on its bilinear map (planar, so each is planar).
 void subdivide_quad(const Poly& q, double h, std::vector<Poly>& out) {
-    const int nu = std::max(1, static_cast<int>(std::ceil(
-                                   std::max(length(q[1] - q[0]), length(q[2] - q[3])) / h)));
-    const int nv = std::max(1, static_cast<int>(std::ceil(
-                                   std::max(length(q[3] - q[0]), length(q[2] - q[1])) / h)));
+    const int nu = std::max(
+        1, static_cast<int>(std::ceil(std::max(length(q[1] - q[0]), length(q[2] - q[3])) / h)));
+    const int nv = std::max(
+        1, static_cast<int>(std::ceil(std::max(length(q[3] - q[0]), length(q[2] - q[1])) / h)));
     auto at = [&](int i, int j) {
         const double s = static_cast<double>(i) / nu, t = static_cast<double>(j) / nv;
         return lerp(lerp(q[0], q[1], s), lerp(q[3], q[2], s), t);
     };
     for (int j = 0; j < nv; ++j) {
-        for (int i = 0; i < nu; ++i) out.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+        for (int i = 0; i < nu; ++i)
+            out.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
     }
 }
 
@@ -171,8 +172,10 @@ double clipped_length(const Segment& s, const Poly& p, const Vec3& n) {
             continue;
         }
         const double t = -num / den;
-        if (den > 0) t0 = std::max(t0, t);
-        else t1 = std::min(t1, t);
+        if (den > 0)
+            t0 = std::max(t0, t);
+        else
+            t1 = std::min(t1, t);
         if (t0 >= t1) return 0;
     }
     return (t1 - t0) * length(d);
@@ -214,7 +217,8 @@ bool overlays(const Piece& q, std::size_t qi, const Piece& r, std::size_t ri, do
 
 bool inside_convex(const Vec3& x, const Poly& p, const Vec3& n, double eps) {
     for (std::size_t i = 0; i < p.size(); ++i) {
-        if (dot(cross(p[(i + 1) % p.size()] - p[i], x - p[i]), n) < -eps * length(p[(i + 1) % p.size()] - p[i])) {
+        if (dot(cross(p[(i + 1) % p.size()] - p[i], x - p[i]), n) <
+            -eps * length(p[(i + 1) % p.size()] - p[i])) {
             return false;
         }
     }
@@ -229,7 +233,8 @@ struct Contacts {
 Contacts all_contacts(const PreparedScene& scene, double eps, double near) {
     const std::size_t k = scene.pieces.size();
     std::vector<Box3> box(k);
-    for (std::size_t i = 0; i < k; ++i) box[i] = bounds(scene.pieces[i].vertices, std::max(eps, near));
+    for (std::size_t i = 0; i < k; ++i)
+        box[i] = bounds(scene.pieces[i].vertices, std::max(eps, near));
     // Sweep along x so that the candidate pairs stay near-linear for spread-out scenes.
     std::vector<std::size_t> order(k);
     for (std::size_t i = 0; i < k; ++i) order[i] = i;
@@ -258,14 +263,16 @@ Contacts all_contacts(const PreparedScene& scene, double eps, double near) {
 
 std::vector<std::vector<Poly>> subdivide_all(const PreparedScene& scene, double h) {
     std::vector<std::vector<Poly>> out(scene.pieces.size());
-    for (std::size_t i = 0; i < scene.pieces.size(); ++i) subdivide_piece(scene.pieces[i], h, out[i]);
+    for (std::size_t i = 0; i < scene.pieces.size(); ++i)
+        subdivide_piece(scene.pieces[i], h, out[i]);
     return out;
 }
 
 std::size_t count_patches(const PreparedScene& scene, const std::vector<std::vector<Poly>>& sub) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < sub.size(); ++i) {
-        const bool two = scene.materials[static_cast<std::size_t>(scene.pieces[i].material)].two_sided;
+        const bool two =
+            scene.materials[static_cast<std::size_t>(scene.pieces[i].material)].two_sided;
         n += sub[i].size() * (two ? 2 : 1);
     }
     return n;
@@ -304,8 +311,7 @@ PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) 
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
         const Piece& piece = scene.pieces[i];
         for (const Segment& s : contacts.segments[i]) split_along(sub[i], s, piece.normal, eps);
-        const bool two_sided =
-            scene.materials[static_cast<std::size_t>(piece.material)].two_sided;
+        const bool two_sided = scene.materials[static_cast<std::size_t>(piece.material)].two_sided;
         for (int side = 0; side < (two_sided ? 2 : 1); ++side) {
             for (const Poly& p : sub[i]) {
                 PatchGeometry g;
@@ -321,7 +327,8 @@ PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) 
                 g.back_side = side == 1;
                 for (const int q : contacts.overlays[i]) {
                     const Piece& over = scene.pieces[static_cast<std::size_t>(q)];
-                    g.hidden = g.hidden || inside_convex(g.centroid, over.vertices, over.normal, eps);
+                    g.hidden =
+                        g.hidden || inside_convex(g.centroid, over.vertices, over.normal, eps);
                 }
                 add_face(g, index);
                 patches_.push_back(std::move(g));
@@ -336,16 +343,16 @@ PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) 
 }
 
 // Vertices are shared between the patches of coplanar pieces of one surface side only, never
-// across surfaces or creases, so Gouraud shading never blends light between objects. Where sharing would
-// make a vertex non-manifold (T-junctions from contact splits), the face gets its own vertices
-// so that face i stays patch i.
+// across surfaces or creases, so Gouraud shading never blends light between objects. Where sharing
+// would make a vertex non-manifold (T-junctions from contact splits), the face gets its own
+// vertices so that face i stays patch i.
 void PatchMesh::add_face(const PatchGeometry& patch, VertexIndex& index) {
     std::vector<PolyMesh::VertexHandle> handles;
     for (const Vec3& v : patch.vertices) {
         // Pieces of one planar polygon have normals equal up to rounding: 1e-9 buckets.
-        const auto plane = std::make_tuple(std::llround(patch.normal.x * 1e9),
-                                           std::llround(patch.normal.y * 1e9),
-                                           std::llround(patch.normal.z * 1e9));
+        const auto plane =
+            std::make_tuple(std::llround(patch.normal.x * 1e9), std::llround(patch.normal.y * 1e9),
+                            std::llround(patch.normal.z * 1e9));
         const auto key = std::make_tuple(patch.surface, patch.back_side, plane, v.x, v.y, v.z);
         auto it = index.find(key);
         if (it == index.end()) {
@@ -355,7 +362,8 @@ void PatchMesh::add_face(const PatchGeometry& patch, VertexIndex& index) {
     }
     if (mesh_.add_face(handles).is_valid()) return;
     handles.clear();
-    for (const Vec3& v : patch.vertices) handles.push_back(mesh_.add_vertex(PolyMesh::Point(v.x, v.y, v.z)));
+    for (const Vec3& v : patch.vertices)
+        handles.push_back(mesh_.add_vertex(PolyMesh::Point(v.x, v.y, v.z)));
     mesh_.add_face(handles);
 }
 
