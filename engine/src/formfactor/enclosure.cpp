@@ -157,7 +157,7 @@ std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& pa
     if (open == 0) return share;
     const int rays = std::max(
         kMinFrontShareRays,
-        std::min(rays_per_patch, static_cast<int>(max_rays / std::max<std::size_t>(open, 1))));
+        static_cast<int>(std::min(static_cast<std::size_t>(rays_per_patch), max_rays / open)));
     tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t i) {
         if (enclosed[i]) return;
         const HemisphereSurvey s = survey_hemisphere(scene, patches, visibility, triangle_piece,
