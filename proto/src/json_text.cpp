@@ -33,7 +33,7 @@ std::string detail_of(const nlohmann::json::exception& e) {
 /// A SAX pass that only tracks where it is, so that an error that carries no location of its
 /// own (a number overflowing to infinity) can be reported at the pointer of the value.
 class Locator : public nlohmann::json_sax<Json> {
-  public:
+public:
     bool null() override { return value(); }
     bool boolean(bool) override { return value(); }
     bool number_integer(number_integer_t) override { return value(); }
@@ -71,7 +71,7 @@ class Locator : public nlohmann::json_sax<Json> {
     std::string message_;
     Json::json_pointer pointer_;
 
-  private:
+private:
     struct Frame {
         bool in_array;
         std::size_t index;
