@@ -36,22 +36,25 @@ HierarchicalSystem::HierarchicalSystem(ElementTree& tree, const std::vector<Link
         tree[e].link_factor_sum = sum;
     }
     // Each surface element's factor sum with its ancestors' (a parent comes before its children).
-    factor_sum_.assign(tree.size(), 0.0);
+    std::vector<double> factor_sum(tree.size(), 0.0);
     for (std::size_t e = 0; e < tree.size(); ++e) {
         const Element& x = tree[e];
         if (x.cluster) continue;
-        factor_sum_[e] =
-            x.link_factor_sum + (x.depth > 0 ? factor_sum_[static_cast<std::size_t>(x.parent)] : 0);
+        factor_sum[e] =
+            x.link_factor_sum + (x.depth > 0 ? factor_sum[static_cast<std::size_t>(x.parent)] : 0);
     }
-    // What each leaf's gathered light is multiplied by, and the light per unit irradiance each
-    // element hands down to its leaves (children come after their parent).
+    // What each leaf's gathered light is multiplied by, what its factors then sum to, and the
+    // light per unit irradiance each element hands down to its leaves (children come after their
+    // parent).
     leaf_scale_.assign(tree.size(), 1.0);
+    completed_sum_.assign(tree.size(), 0.0);
     weight_.assign(tree.size(), 0.0);
     for (std::size_t e = tree.size(); e-- > 0;) {
         const Element& x = tree[e];
         if (x.cluster) continue;
         if (x.leaf()) {
-            leaf_scale_[e] = completion(x, factor_sum_[e]);
+            leaf_scale_[e] = completion(x, factor_sum[e]);
+            completed_sum_[e] = factor_sum[e] * leaf_scale_[e];
             weight_[e] = x.area_m2 * leaf_scale_[e];
         }
         if (x.depth > 0) weight_[static_cast<std::size_t>(x.parent)] += weight_[e];
@@ -64,7 +67,7 @@ HierarchicalSystem::HierarchicalSystem(ElementTree& tree, const std::vector<Link
         double rho = 0;
         for (int c = 0; c < channels; ++c)
             rho = std::max(rho, x.reflectance[static_cast<std::size_t>(c)]);
-        q_inf_ = std::max(q_inf_, rho * factor_sum_[e] * leaf_scale_[e]);
+        q_inf_ = std::max(q_inf_, rho * completed_sum_[e]);
         total_area_ += x.area_m2;
         ++leaves_;
     }
@@ -124,7 +127,7 @@ void HierarchicalSystem::find_parts() {
         if (x.cluster || !x.leaf()) continue;
         const auto k = static_cast<std::size_t>(part_[static_cast<std::size_t>(x.patch)]);
         part_area_[k] += x.area_m2;
-        escape[k] += x.area_m2 * std::max(0.0, 1 - factor_sum_[e] * leaf_scale_[e]);
+        escape[k] += x.area_m2 * std::max(0.0, 1 - completed_sum_[e]);
     }
     part_closed_.resize(part_area_.size());
     for (std::size_t k = 0; k < part_area_.size(); ++k)
@@ -254,7 +257,7 @@ HierarchicalOutcome HierarchicalSystem::solve(const SolverControl& control,
         out.converged = true;
         return out;
     }
-    ProgressiveShooting shooting(tree_, links_, factor_sum_, leaf_scale_, weight_,
+    ProgressiveShooting shooting(tree_, links_, completed_sum_, leaf_scale_, weight_,
                                  enclosed_patch_.size(), channels_);
     std::array<double, 3> residual = shooting.run(control, publish, irradiance_);
     for (double& r : residual) r *= q_inf_;

@@ -72,10 +72,10 @@ private:
     const std::vector<double>& front_share_;
     int channels_;
     std::vector<Rgb> irradiance_;
-    std::vector<Rgb> change_;         // each leaf's change in the last sweep
-    std::vector<double> factor_sum_;  // each surface element's link factors and its ancestors'
-    std::vector<double> leaf_scale_;  // what a leaf's gathered light is multiplied by
-    std::vector<double> weight_;      // Σ over an element's leaves of area × leaf_scale_
+    std::vector<Rgb> change_;            // each leaf's change in the last sweep
+    std::vector<double> leaf_scale_;     // what a leaf's gathered light is multiplied by
+    std::vector<double> completed_sum_;  // per leaf: its factors' sum times leaf_scale_
+    std::vector<double> weight_;         // Σ over an element's leaves of area × leaf_scale_
     double q_inf_ = 0;
     double total_area_ = 0;  // of the leaves
     std::size_t leaves_ = 0;

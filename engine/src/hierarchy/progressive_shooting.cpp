@@ -23,13 +23,13 @@ struct Candidate {
 }  // namespace
 
 ProgressiveShooting::ProgressiveShooting(ElementTree& tree, const std::vector<Link>& links,
-                                         const std::vector<double>& factor_sum,
+                                         const std::vector<double>& completed_sum,
                                          const std::vector<double>& scale,
                                          const std::vector<double>& weight, std::size_t n_patches,
                                          int channels)
     : tree_(tree),
       links_(links),
-      factor_sum_(factor_sum),
+      completed_sum_(completed_sum),
       scale_(scale),
       weight_(weight),
       channels_(channels) {
@@ -213,7 +213,7 @@ void ProgressiveShooting::publish_with_ambient(const std::function<void()>& publ
         if (x.cluster || !x.leaf()) continue;
         leaves.push_back(e);
         area.push_back(x.area_m2);
-        seen.push_back(std::min(1.0, factor_sum_[e] * scale_[e]));
+        seen.push_back(std::min(1.0, completed_sum_[e]));
     }
     Rgb ambient{0, 0, 0};
     std::vector<double> unshot(leaves.size()), rho(leaves.size());

@@ -22,12 +22,12 @@ class ProgressiveShooting {
 public:
     /// Every link's source is a surface element (a cluster's links pass on the light of the
     /// root patches its samples lie on, see link_refinement), so each belongs to one patch.
-    /// `factor_sum[e]`: the factors of leaf e's links and its ancestors' summed; `scale[e]`: what
-    /// they are multiplied by (their completion); `weight[e]`: Σ over the leaves below e of
-    /// area × scale, the light per unit irradiance that element e passes on to its leaves;
-    /// `n_patches`: the root patches' count.
+    /// `scale[e]`: what leaf e's gathered factors are multiplied by (their completion);
+    /// `completed_sum[e]`: what they then sum to, the share of its hemisphere they cover;
+    /// `weight[e]`: Σ over the leaves below e of area × scale, the light per unit irradiance
+    /// that element e passes on to its leaves; `n_patches`: the root patches' count.
     ProgressiveShooting(ElementTree& tree, const std::vector<Link>& links,
-                        const std::vector<double>& factor_sum, const std::vector<double>& scale,
+                        const std::vector<double>& completed_sum, const std::vector<double>& scale,
                         const std::vector<double>& weight, std::size_t n_patches, int channels);
 
     /// Lights the leaves with the source term (emission, reflected luminaire light), then shoots
@@ -51,7 +51,7 @@ private:
 
     ElementTree& tree_;
     const std::vector<Link>& links_;
-    const std::vector<double>& factor_sum_;
+    const std::vector<double>& completed_sum_;
     const std::vector<double>& scale_;
     const std::vector<double>& weight_;
     int channels_;

@@ -143,10 +143,15 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t j) {
         for (std::size_t i = 0; i < n; ++i) ft[j * n + i] = s.f(i, j);
     });
-    std::vector<double> row_sum(n, 0.0);
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-        for (std::size_t j = 0; j < n; ++j) row_sum[i] += s.f(i, j);
-    });
+    // Row sums weigh the ambient term of snapshots, so only a solve that publishes them needs
+    // them (empty: the scene is taken as closed).
+    std::vector<double> row_sum;
+    if (control.snapshot) {
+        row_sum.assign(n, 0.0);
+        tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+            for (std::size_t j = 0; j < n; ++j) row_sum[i] += s.f(i, j);
+        });
+    }
     std::array<ContractionNorms, 3> q;
     for (int c = 0; c < s.channels; ++c) q[static_cast<std::size_t>(c)] = contraction_norms(s, c);
     // The O(n) estimate is cheap next to a shot's O(n) update only every few shots.
