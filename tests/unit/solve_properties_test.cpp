@@ -27,7 +27,9 @@ Scene small_room() {
     scene.luminaires = {testing::luminaire("L", {1.0, 3.0, 2.0}, 500.0)};
     scene.sensors = {
         testing::sensor_grid("workplane", {0, 0, 0.8}, {4, 0, 0}, {0, 4, 0}, 4, 4),
-        testing::sensor_points("wall", {{0.0 + 0.01, 2.0, 1.5}, {3.99, 1.0, 1.0}}, {1, 0, 0}),
+        // Vertical illuminance 1 cm in front of two walls, facing into the room.
+        testing::sensor_points("wall-west", {{0.01, 2.0, 1.5}}, {1, 0, 0}),
+        testing::sensor_points("wall-east", {{3.99, 1.0, 1.0}}, {-1, 0, 0}),
     };
     return scene;
 }

@@ -385,8 +385,9 @@ TEST(CoplanarOverlays, EmitterInCeilingAndRugOnFloorMatchCutSurfaces) {
 
 constexpr double kGap = 0.001;
 constexpr double kEmitterExitance = 1000;
-// Elements a few 1 m² surfaces may take, with room to spare (the bug took 1.9 million).
-constexpr std::size_t kNearElementLimit = 20000;
+// Elements a few 1 m² surfaces may take, refined until the estimate meets the tolerance, with
+// room to spare (the bug took 1.9 million).
+constexpr std::size_t kNearElementLimit = 100000;
 
 struct NearCase {
     const char* method;

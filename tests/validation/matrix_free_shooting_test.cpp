@@ -25,11 +25,13 @@ namespace {
 using testing::find_surface;
 
 /// Runs the pipeline as solve() does, with the dense shooting limit at 0 polygons when
-/// `matrix_free`.
+/// `matrix_free`, and without refinement.
 Result run(const Scene& scene, const SolveOptions& options, bool matrix_free,
            SolveObserver* observer = nullptr, const CancellationToken* cancel = nullptr) {
     PipelineLimits limits;
     if (matrix_free) limits.max_dense_shooting_polygons = 0;
+    // Both on the mesh of the tolerance (matrix-free shooting is never refined).
+    limits.max_refinement = 1;
     Result result;
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
     arena.execute([&] { result = Pipeline(scene, options, observer, cancel, limits).run(); });

@@ -40,6 +40,16 @@ constexpr double kCheckCoarsening = 4;
 constexpr double kMaxCheckTolerance = 0.5;
 constexpr double kMinCheckRatio = 1.5;
 constexpr double kCheckMargin = 3;
+// A converged result whose estimate exceeds the tolerance is solved again finer (see
+// refine_to_tolerance): each time the tolerance shrinks by the estimate over this share of the
+// tolerance, by at least kMinRefineRatio (a smaller step would amplify the two solutions' noise)
+// and at most kMaxRefineRatio, down to the asked tolerance over PipelineLimits::max_refinement.
+constexpr double kRefineTarget = 0.7;
+constexpr double kMinRefineRatio = 2;
+constexpr double kMaxRefineRatio = 8;
+// Mesh versions of refined solutions: above those of either path (dense 1, hierarchical 1–2),
+// so a viewer sees the triangles change.
+constexpr std::uint64_t kFirstRefinedMeshVersion = 3;
 
 // All pieces as triangle fans, and the piece of each triangle.
 std::pair<std::vector<Triangle>, std::vector<int>> occluder_triangles(const PreparedScene& scene) {
@@ -137,6 +147,85 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
     if (!finished) result.status = SolveStatus::stopped;
 }
 
+void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string method,
+                                   Result& result) {
+    double solved_tolerance = options_.tolerance;
+    const double finest = options_.tolerance / limits_.max_refinement;
+    for (std::uint64_t round = 0; result.status == SolveStatus::converged &&
+                                  !(result.stats.error_estimate <= options_.tolerance);
+         ++round) {
+        // In steps of √2, so that a rounding difference in the estimate (the same room in
+        // millimetres) does not change the mesh.
+        const double wanted = result.stats.error_estimate / (kRefineTarget * options_.tolerance);
+        const double ratio = std::min(std::clamp(std::exp2(0.5 * std::ceil(2 * std::log2(wanted))),
+                                                 kMinRefineRatio, kMaxRefineRatio),
+                                      solved_tolerance / finest);
+        if (should_stop()) {
+            result.status = SolveStatus::stopped;
+            break;
+        }
+        if (ratio < kMinRefineRatio) break;
+        SolveOptions finer = options_;
+        finer.tolerance = solved_tolerance / ratio;
+        if (deadline_)
+            finer.max_seconds = std::chrono::duration<double>(*deadline_ - Clock::now()).count();
+        // The dense path's mesh cannot outgrow its patch budget: `auto` goes on with the
+        // hierarchical solver, the others with the finest mesh that fits, once.
+        bool switched = false;
+        double mesh_ratio = ratio;
+        if (method != "hierarchical") {
+            const DenseMeshSize size = dense_mesh_size(prepared, finer.tolerance);
+            if (!size.fits && options_.method == "auto") {
+                method = "hierarchical";
+                switched = true;
+            } else if (!size.fits) {
+                // Errors go as h², i.e. as 1 / patches.
+                mesh_ratio = static_cast<double>(size.patches) /
+                             static_cast<double>(std::max<std::size_t>(result.stats.patches, 1));
+                if (!(mesh_ratio >= kMinCheckRatio)) break;
+            }
+        }
+        report("refining", 0.95, result.stats.iterations, result.stats.error_estimate,
+               result.stats.unshot_fraction);
+        Pipeline refined(scene_, finer, nullptr, cancel_, limits_);
+        Result f = method == "hierarchical" ? refined.run_hierarchical(prepared)
+                                            : refined.run_dense(prepared, method, false);
+        // A finer solve's own estimate need only meet the asked tolerance, not its own; it is
+        // judged against that below.
+        bool finished = f.status == SolveStatus::converged ||
+                        (f.status == SolveStatus::stopped && !should_stop() &&
+                         f.stats.error_estimate <= options_.tolerance);
+        if (finished) f.status = SolveStatus::converged;
+        // Richardson's estimate from the two solutions, as check_discretisation's; a solution
+        // of the other method gets its own check instead.
+        if (finished && switched) {
+            refined.check_discretisation(prepared, method, f);
+            finished = f.status == SolveStatus::converged;
+        } else if (finished) {
+            f.stats.error_estimate =
+                std::max(f.stats.error_estimate,
+                         kCheckMargin * largest_relative_difference(f, result) / (mesh_ratio - 1));
+        }
+        rays_ += refined.rays_;
+        if (!finished) {
+            if (should_stop()) result.status = SolveStatus::stopped;
+            break;
+        }
+        result = std::move(f);
+        solved_tolerance = finer.tolerance;
+        final_mesh_ = refined.final_mesh_;
+        final_mesh_version_ = kFirstRefinedMeshVersion + round;
+    }
+    result.stats.rays = rays_;
+    result.stats.seconds = elapsed();
+}
+
+Pipeline::DenseMeshSize Pipeline::dense_mesh_size(const PreparedSolve& prepared, double tolerance) {
+    const double edge = target_patch_edge(prepared.mean_free_path_m, tolerance);
+    const PatchMesh mesh(prepared.scene, {edge, kMaxDensePatches});
+    return {mesh.size(), mesh.target_edge_m() <= edge};
+}
+
 SolverControl Pipeline::solving_control(double tolerance) const {
     tolerance *= system_tolerance_scale_;
     SolverControl control;
@@ -206,6 +295,7 @@ Result Pipeline::run() {
     // Matrix-free shooting is for models too large to solve twice.
     if (solved.status == SolveStatus::converged && !matrix_free) {
         check_discretisation(prepared, method, solved);
+        refine_to_tolerance(prepared, method, solved);
     }
     publish_final(solved);
     report("done", 1.0, solved.stats.iterations, solved.stats.error_estimate,

@@ -25,7 +25,8 @@ struct PreparedSolve {
     double mean_free_path_m = 0;
 };
 
-/// Size limits of the dense path; tests lower them to reach the matrix-free path on small scenes.
+/// Size limits of the dense path and of refinement; tests lower them to reach the matrix-free path
+/// on small scenes, or to compare solutions on one mesh.
 struct PipelineLimits {
     /// Above this many convex polygons the dense solvers refuse the scene: n² factors would not
     /// fit (one patch per polygon at least).
@@ -33,6 +34,9 @@ struct PipelineLimits {
     /// Above this many convex polygons `shooting` runs without a form-factor matrix: the mesh
     /// cannot fit the dense path's patch budget (3000), and shooting needs no matrix.
     std::size_t max_dense_shooting_polygons = 3000;
+    /// A result whose estimate exceeds the tolerance is solved again finer, down to the
+    /// tolerance over this (see refine_to_tolerance); 1: never.
+    double max_refinement = 32;
 };
 
 class Pipeline {
@@ -62,6 +66,18 @@ private:
     /// limit, cancelled) makes the result `stopped`.
     void check_discretisation(const PreparedSolve& prepared, const std::string& method,
                               Result& result);
+    /// While a converged result's estimate exceeds the tolerance, solves again at a smaller
+    /// tolerance (errors shrink about in proportion) and estimates the finer result's error
+    /// from the two solutions. The time limit or a cancel makes it `stopped`; where no finer
+    /// mesh can be tried (limits_.max_refinement, the dense patch budget, the memory budget) the
+    /// finest result stays `converged` with its estimate above the tolerance.
+    void refine_to_tolerance(const PreparedSolve& prepared, std::string method, Result& result);
+    struct DenseMeshSize {
+        std::size_t patches = 0;
+        bool fits = true;  ///< false: the patch size had to grow to fit the patch budget
+    };
+    /// The dense path's mesh at `tolerance`.
+    static DenseMeshSize dense_mesh_size(const PreparedSolve& prepared, double tolerance);
     /// Publishes the final mesh (`final_mesh_`) and the result's sensors as the final snapshot,
     /// with the result's error estimate.
     void publish_final(const Result& result);
