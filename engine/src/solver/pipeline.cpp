@@ -164,7 +164,7 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
             result.status = SolveStatus::stopped;
             break;
         }
-        if (ratio < kMinRefineRatio) break;
+        if (!(ratio >= kMinRefineRatio)) break;  // also a NaN estimate: nothing to refine by
         SolveOptions finer = options_;
         finer.tolerance = solved_tolerance / ratio;
         if (deadline_)
