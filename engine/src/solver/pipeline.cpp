@@ -51,6 +51,15 @@ constexpr double kMaxRefineRatio = 8;
 // so a viewer sees the triangles change.
 constexpr std::uint64_t kFirstRefinedMeshVersion = 3;
 
+// The error of the finer of two solutions whose tolerances (or, for a dense mesh held to its
+// budget, patch counts) differ by `ratio`: errors shrink about in proportion to the tolerance
+// (the dense path's O(h²) with h ∝ √tolerance), so it is about their difference / (ratio − 1),
+// reported with a margin of kCheckMargin since convergence is slower where the solution is not
+// smooth.
+double richardson_estimate(const Result& fine, const Result& coarse, double ratio) {
+    return kCheckMargin * largest_relative_difference(fine, coarse) / (ratio - 1);
+}
+
 // All pieces as triangle fans, and the piece of each triangle.
 std::pair<std::vector<Triangle>, std::vector<int>> occluder_triangles(const PreparedScene& scene) {
     std::vector<Triangle> tris;
@@ -116,30 +125,19 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
     if (!(ratio >= kMinCheckRatio)) return;
     report("checking", 0.95, result.stats.iterations, result.stats.error_estimate,
            result.stats.unshot_fraction);
-    SolveOptions coarse = options_;
-    coarse.tolerance = coarse_tolerance;
+    SolveOptions coarse = options_within_deadline(coarse_tolerance);
     coarse.want_mesh = false;
     bool finished = !should_stop();
-    if (deadline_)
-        coarse.max_seconds = std::chrono::duration<double>(*deadline_ - Clock::now()).count();
     double estimate = result.stats.error_estimate;
     if (finished) {
         Pipeline check(scene_, coarse, nullptr, cancel_, limits_);
         // Its linear system is solved as far as this one's, so that the difference is the
         // mesh's, not the iteration's.
         check.system_tolerance_scale_ = options_.tolerance / coarse_tolerance;
-        const Result c = method == "hierarchical" ? check.run_hierarchical(prepared)
-                                                  : check.run_dense(prepared, method, false);
+        const Result c = check.run_method(prepared, method);
         rays_ += check.rays_;
         finished = c.status == SolveStatus::converged;
-        // Errors shrink about in proportion to the tolerance (the dense path's O(h²) with
-        // h ∝ √tolerance): the fine solution's error is about the difference / (ratio − 1).
-        // Reported with a margin of kCheckMargin, since convergence is slower where the
-        // solution is not smooth.
-        if (finished) {
-            estimate = std::max(
-                estimate, kCheckMargin * largest_relative_difference(result, c) / (ratio - 1));
-        }
+        if (finished) estimate = std::max(estimate, richardson_estimate(result, c, ratio));
     }
     result.stats.error_estimate = estimate;
     result.stats.rays = rays_;
@@ -165,10 +163,7 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
             break;
         }
         if (!(ratio >= kMinRefineRatio)) break;  // also a NaN estimate: nothing to refine by
-        SolveOptions finer = options_;
-        finer.tolerance = solved_tolerance / ratio;
-        if (deadline_)
-            finer.max_seconds = std::chrono::duration<double>(*deadline_ - Clock::now()).count();
+        const SolveOptions finer = options_within_deadline(solved_tolerance / ratio);
         // The dense path's mesh cannot outgrow its patch budget: `auto` goes on with the
         // hierarchical solver, the others with the finest mesh that fits, once.
         bool switched = false;
@@ -188,8 +183,7 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
         report("refining", 0.95, result.stats.iterations, result.stats.error_estimate,
                result.stats.unshot_fraction);
         Pipeline refined(scene_, finer, nullptr, cancel_, limits_);
-        Result f = method == "hierarchical" ? refined.run_hierarchical(prepared)
-                                            : refined.run_dense(prepared, method, false);
+        Result f = refined.run_method(prepared, method);
         // A finer solve's own estimate need only meet the asked tolerance, not its own; it is
         // judged against that below.
         bool finished = f.status == SolveStatus::converged ||
@@ -203,8 +197,7 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
             finished = f.status == SolveStatus::converged;
         } else if (finished) {
             f.stats.error_estimate =
-                std::max(f.stats.error_estimate,
-                         kCheckMargin * largest_relative_difference(f, result) / (mesh_ratio - 1));
+                std::max(f.stats.error_estimate, richardson_estimate(f, result, mesh_ratio));
         }
         rays_ += refined.rays_;
         if (!finished) {
@@ -218,6 +211,19 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
     }
     result.stats.rays = rays_;
     result.stats.seconds = elapsed();
+}
+
+Result Pipeline::run_method(const PreparedSolve& prepared, const std::string& method) {
+    return method == "hierarchical" ? run_hierarchical(prepared)
+                                    : run_dense(prepared, method, false);
+}
+
+SolveOptions Pipeline::options_within_deadline(double tolerance) const {
+    SolveOptions options = options_;
+    options.tolerance = tolerance;
+    if (deadline_)
+        options.max_seconds = std::chrono::duration<double>(*deadline_ - Clock::now()).count();
+    return options;
 }
 
 Pipeline::DenseMeshSize Pipeline::dense_mesh_size(const PreparedSolve& prepared, double tolerance) {

@@ -72,6 +72,11 @@ private:
     /// mesh can be tried (limits_.max_refinement, the dense patch budget, the memory budget) the
     /// finest result stays `converged` with its estimate above the tolerance.
     void refine_to_tolerance(const PreparedSolve& prepared, std::string method, Result& result);
+    /// The hierarchical path, or the dense one with its matrix: what the check and refinement
+    /// solve again.
+    Result run_method(const PreparedSolve& prepared, const std::string& method);
+    /// This solve's options at another tolerance, with what is left of its time limit.
+    SolveOptions options_within_deadline(double tolerance) const;
     struct DenseMeshSize {
         std::size_t patches = 0;
         bool fits = true;  ///< false: the patch size had to grow to fit the patch budget
