@@ -154,6 +154,7 @@ TEST(SensorImportance, UnseenRoomStaysCoarseAndTheSensorsReadTheSame) {
     EXPECT_LT(triangles_in_room_b(*unseen.mesh), triangles_in_room_b(*seen.mesh) / 2)
         << describe(unseen) << " against " << describe(seen);
     EXPECT_LT(unseen.stats.links, seen.stats.links);
+    std::cerr << describe(unseen) << " against " << describe(seen) << "\n";
     // Room A's work plane does not notice: each reading within a tenth of the tolerance.
     const std::vector<double>& a = unseen.sensors[0].illuminance;
     const std::vector<double>& b = seen.sensors[0].illuminance;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "hierarchy/element_tree.h"
@@ -46,6 +47,20 @@ public:
     /// Irradiance (lux, per channel) on the front of leaf `e`, links and luminaires together.
     const Rgb& leaf_irradiance(int e) const { return irradiance_[static_cast<std::size_t>(e)]; }
 
+    /// Irradiance and radiosity per element (per channel; the leaves' are the answer).
+    struct LeafLight {
+        std::vector<Rgb> irradiance, radiosity;
+    };
+    LeafLight light() const;
+
+    /// The solution had the completed leaves been completed per root patch instead (see
+    /// patchwise_completion_change): a second, as plausible answer of the same links, whose
+    /// difference from this one the error estimate must cover. Each patch's change counts
+    /// `weight[patch]` times (its importance to the sensors, see RefinementCriteria; empty: 1),
+    /// and each part is scaled to absorb what the solution's does (see rebalance). Two more
+    /// solves of the linked system; the solution itself is left as it was.
+    LeafLight patchwise_completed(const SolverControl& control, std::span<const double> weight);
+
 private:
     struct Residual {
         std::array<double, 3> inf{0, 0, 0}, area_l1{0, 0, 0}, area_signed{0, 0, 0};
@@ -60,8 +75,10 @@ private:
     void measure_defects();
     void conserve(const SolverControl& control, HierarchicalOutcome& out);
     double completion(const Element& leaf, double factor_sum) const;
-    /// Light a leaf gets from outside the links: emission and luminaires, or during the
-    /// conservation pass its share of the light its closed part's links lost.
+    std::vector<Rgb> patchwise_completion_change(std::span<const double> weight) const;
+    void rebalance(LeafLight& other, const LeafLight& solution) const;
+    /// Light a leaf gets from outside the links: emission and luminaires, or during a response
+    /// solve (conserve(), patchwise_completed()) that solve's source, spread_.
     Rgb outside_exitance(const Element& leaf) const;
     Rgb outside_irradiance(const Element& leaf, std::size_t index) const;
 
@@ -85,8 +102,8 @@ private:
     std::vector<double> part_area_;
     std::vector<char> part_closed_;
     std::vector<double> defect_;  // per leaf of an enclosed patch: light its links fail to hand on
-    bool conserving_ = false;     // the conservation pass is running
-    std::vector<Rgb> spread_;     // its irradiance per unit of lost light (u in conserve())
+    bool responding_ = false;     // a response solve is running
+    std::vector<Rgb> spread_;     // its source irradiance (u in conserve())
 };
 
 }  // namespace radiant

@@ -1,6 +1,7 @@
 // The hierarchical path of the pipeline: root patches, element tree, links, sweeps, gather.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "formfactor/enclosure.h"
 #include "hierarchy/element_tree.h"
@@ -11,6 +12,7 @@
 #include "hierarchy/sensor_importance.h"
 #include "meshing/patch_mesh.h"
 #include "solution/gouraud.h"
+#include "solution/result_difference.h"
 #include "solution/surface_summary.h"
 #include "solver/pipeline.h"
 #include "visibility/occlusion_culling.h"
@@ -27,6 +29,11 @@ constexpr double kMinEdgeFactor = 0.25;
 constexpr double kLinkPowerFraction = 2.5e-4;
 // A node may add this fraction of tolerance × the mean irradiance to a sensor unopened.
 constexpr double kGatherIrradianceFraction = 0.02;
+// The estimate never claims less than this share of the tolerance: two solutions whose links
+// are each held far under it differ by their quadratures' noise as much as by their
+// convergence, so the mesh check cannot resolve errors below it (parallel squares: errors of
+// 2 % of the tolerance where the check's two solutions agreed to 0.1 % of it).
+constexpr double kUnresolvedShare = 0.05;
 // Share of the tolerance the linked system is solved to (a closed room's energy balance is
 // then within a tenth of the tolerance: the engine core's bar).
 constexpr double kSystemToleranceShare = 0.02;
@@ -178,18 +185,31 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     }
     const HierarchicalOutcome outcome = system.solve(control, publish);
 
-    std::vector<SolvedElement> solved;
-    for (std::size_t e = 0; e < tree.size(); ++e) {
-        const Element& x = tree[e];
-        if (x.cluster || !x.leaf()) continue;
-        const PatchGeometry& p = roots.patch(static_cast<std::size_t>(x.patch));
-        solved.push_back({p.surface, p.material, x.area_m2, p.back_side, false,
-                          system.leaf_irradiance(static_cast<int>(e)), x.radiosity});
-    }
-    for (std::size_t i = 0; i < roots.size(); ++i) {
-        const PatchGeometry& p = roots.patch(i);
-        if (p.hidden)
-            solved.push_back({p.surface, p.material, p.area_m2, p.back_side, true, {}, {}});
+    auto solved_leaves = [&](const HierarchicalSystem::LeafLight& light) {
+        std::vector<SolvedElement> solved;
+        for (std::size_t e = 0; e < tree.size(); ++e) {
+            const Element& x = tree[e];
+            if (x.cluster || !x.leaf()) continue;
+            const PatchGeometry& p = roots.patch(static_cast<std::size_t>(x.patch));
+            solved.push_back({p.surface, p.material, x.area_m2, p.back_side, false,
+                              light.irradiance[e], light.radiosity[e]});
+        }
+        for (std::size_t i = 0; i < roots.size(); ++i) {
+            const PatchGeometry& p = roots.patch(i);
+            if (p.hidden)
+                solved.push_back({p.surface, p.material, p.area_m2, p.back_side, true, {}, {}});
+        }
+        return solved;
+    };
+    const std::vector<SolvedElement> solved = solved_leaves(system.light());
+    // Completing each leaf's factor sum or each patch's gives two answers of the same links; the
+    // estimate covers their difference (see HierarchicalSystem::patchwise_completed).
+    std::optional<Result> patchwise;
+    if (outcome.converged) {
+        const HierarchicalSystem::LeafLight other =
+            system.patchwise_completed(control, criteria.receiver_weight);
+        patchwise.emplace();
+        patchwise->surfaces = summarise_surfaces(scene, solved_leaves(other), channels).surfaces;
     }
     const auto mesh =
         std::make_shared<const SolvedMesh>(leaf_mesh(tree, roots, channels, scene.world_origin));
@@ -213,6 +233,15 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     }
     const bool stopped = linked.stopped || linked.budget_reached || !outcome.converged ||
                          !(error_estimate <= options_.tolerance);
+    // Errors of the links that the mesh check cannot see; they shrink with the tolerance, so
+    // they do not stop the result, but a finer solve can be asked for (refine_to_tolerance).
+    if (patchwise) {
+        Result surfaces;
+        surfaces.surfaces = result.surfaces;
+        error_estimate =
+            std::max(error_estimate, largest_relative_difference(surfaces, *patchwise));
+    }
+    error_estimate = std::max(error_estimate, kUnresolvedShare * options_.tolerance);
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
                  channels, stopped);
