@@ -30,7 +30,9 @@ TEST(Snapshots, VersionedWhileSolvingAndFinalEqualsResult) {
     for (const std::string method : {"hierarchical", "shooting", "jacobi", "direct"}) {
         SolveOptions options = options_from(scene.settings);
         options.method = method;
-        options.tolerance = 0.001;
+        // The hierarchical estimate of this closed ρ 0.9 room stays near 0.3 % however fine the
+        // links (twice the completions' difference, see hierarchical_pipeline.cpp).
+        options.tolerance = method == "hierarchical" ? 0.005 : 0.001;
         options.snapshot_interval_seconds = 0;  // every chance the solver gives
         options.want_mesh = true;
         SnapshotRecorder recorder;

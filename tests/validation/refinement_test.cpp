@@ -23,46 +23,54 @@ struct Pair {
     Result refined;    // as solve() does
 };
 
-Pair solve_box_room(const std::string& name, const std::string& method) {
-    const Scene scene = testing::load_scene(data_path("box_rooms/" + name + ".json"));
+struct Case {
+    const char* name;
+    const char* method;
+    double tolerance;
+};
+
+Pair solve_box_room(const Case& c) {
+    const Scene scene =
+        testing::load_scene(data_path(std::string("box_rooms/") + c.name + ".json"));
     SolveOptions options = options_from(scene.settings);
-    options.method = method;
-    options.tolerance = 0.01;
+    options.method = c.method;
+    options.tolerance = c.tolerance;
     PipelineLimits once;
     once.max_refinement = 1;
     return {Pipeline(scene, options, nullptr, nullptr, once).run(),
             Pipeline(scene, options, nullptr, nullptr).run()};
 }
 
-class Refinement : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
+class Refinement : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Refinement, MeetsTheToleranceAndNearsTheReference) {
-    const auto [name, method] = GetParam();
-    const auto [unrefined, refined] = solve_box_room(name, method);
+    const Case c = GetParam();
+    const auto [unrefined, refined] = solve_box_room(c);
     // Without refinement the mesh check finds the mesh too coarse; the result stays converged,
     // as where no finer mesh can be tried.
     ASSERT_EQ(unrefined.status, SolveStatus::converged) << describe(unrefined);
-    ASSERT_GT(unrefined.stats.error_estimate, 0.01) << describe(unrefined);
+    ASSERT_GT(unrefined.stats.error_estimate, c.tolerance) << describe(unrefined);
 
     ASSERT_EQ(refined.status, SolveStatus::converged) << describe(refined);
-    EXPECT_LE(refined.stats.error_estimate, 0.01) << describe(refined);
+    EXPECT_LE(refined.stats.error_estimate, c.tolerance) << describe(refined);
     EXPECT_GT(refined.stats.elements, unrefined.stats.elements) << describe(refined);
 
     const nlohmann::json expected =
-        testing::read_json(data_path("box_rooms/expected.json"))[std::string(name)];
+        testing::read_json(data_path("box_rooms/expected.json"))[std::string(c.name)];
     const double before = testing::largest_relative_error(unrefined, expected);
     const double after = testing::largest_relative_error(refined, expected);
     EXPECT_LT(after, before) << describe(refined);
     EXPECT_GE(refined.stats.error_estimate, after) << describe(refined);
 }
 
+// The hierarchical solver's first solve of the panel rooms at 0.01 no longer needs refining since
+// links share their sources by the factor (see Link); the mixed cube at 0.005 still does.
 INSTANTIATE_TEST_SUITE_P(BoxRooms, Refinement,
-                         ::testing::Values(std::pair{"box-room-panel", "hierarchical"},
-                                           std::pair{"box-corridor-panel", "hierarchical"},
-                                           std::pair{"box-cube-rho0.2", "direct"}),
+                         ::testing::Values(Case{"box-cube-mixed", "hierarchical", 0.005},
+                                           Case{"box-cube-rho0.2", "direct", 0.01}),
                          [](const auto& param_info) {
-                             return testing::test_name(std::string(param_info.param.first) + "_" +
-                                                       param_info.param.second);
+                             return testing::test_name(std::string(param_info.param.name) + "_" +
+                                                       param_info.param.method);
                          });
 
 }  // namespace

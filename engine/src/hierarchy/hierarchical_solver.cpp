@@ -270,8 +270,17 @@ void HierarchicalSystem::measure_defects() {
     defect_.assign(n, 0.0);
     std::vector<double> handed(n, 0.0);  // per unit area of the source
     for (const Link& l : links_) {
-        handed[static_cast<std::size_t>(l.source)] +=
-            l.factor * weight_[static_cast<std::size_t>(l.receiver)];
+        const double light = l.factor * weight_[static_cast<std::size_t>(l.receiver)];
+        const auto& share = l.child_share;
+        const int shares = share[0] + share[1] + share[2] + share[3];
+        if (shares == 0) {
+            handed[static_cast<std::size_t>(l.source)] += light;
+            continue;
+        }
+        // Shared among the children: each hands on its share (see handed_radiosity).
+        const std::vector<int>& children = tree_[static_cast<std::size_t>(l.source)].children;
+        for (std::size_t c = 0; c < children.size(); ++c)
+            handed[static_cast<std::size_t>(children[c])] += light * share[c] / shares;
     }
     for (std::size_t e = 0; e < n; ++e) {
         const Element& x = tree_[e];
@@ -298,7 +307,9 @@ void HierarchicalSystem::gather() {
         Rgb g{0, 0, 0};
         for (std::size_t k = first_link_[e]; k < first_link_[e + 1]; ++k) {
             const Link& l = links_[k];
-            const Rgb& b = tree_[static_cast<std::size_t>(l.source)].radiosity;
+            const Rgb b = handed_radiosity(l, tree_, [this](int s) -> const Rgb& {
+                return tree_[static_cast<std::size_t>(s)].radiosity;
+            });
             for (int c = 0; c < channels_; ++c) g[c] += l.factor * b[c];
         }
         tree_[e].gathered = g;

@@ -28,6 +28,19 @@ struct Pair {
 // near-singular for the receiver's quadrature points (see Oracle::surface_factor).
 constexpr double kNearSingular = 0.25;
 
+// A link's children's shares catch the covariance of the kernel and the radiosity between the
+// children, not within them: for a kernel and a radiosity that vary linearly over the source,
+// 3/4 of it (the variance of a square's quarters' means is 3/4 of the square's). Extrapolating
+// the shares' departure from the area shares by 4/3 catches it all. Measured (box rooms at
+// tolerance 0.005, the panel's irradiance): −1.14 % with the area mean, −0.43 % with the shares,
+// −0.20 % extrapolated.
+constexpr double kShareExtrapolation = 4.0 / 3.0;
+// Pairs farther apart than this many times the larger one's diameter take the children's shares
+// from the kernel between centroids (its error is second order in size / distance, the shares'
+// departure from the area shares first order); nearer ones from Lambert's factor at the
+// receiver's points.
+constexpr double kShareFarRatio = 1;
+
 enum class Decision { drop, link, split_receiver, split_source };
 
 // Where a link's light comes from: the source itself, or for a cluster, the root patches its
@@ -293,6 +306,51 @@ private:
     double eps_;
 };
 
+// Each child's share of a link's factor, from the unoccluded kernel at the receiver's points and
+// extrapolated (kShareExtrapolation), kept where it differs from the child's share of the area by
+// more than the rounding of 255ths.
+void share_sources(std::vector<Link>& links, const ElementTree& tree) {
+    tbb::parallel_for(std::size_t{0}, links.size(), [&](std::size_t i) {
+        Link& l = links[i];
+        const Element& s = tree[static_cast<std::size_t>(l.source)];
+        if (s.cluster || s.leaf() || s.children.size() > l.child_share.size()) return;
+        const Element& r = tree[static_cast<std::size_t>(l.receiver)];
+        // Far from both (most links), the kernel between centroids tells the children apart.
+        const bool far = distance(Box{r.lo, r.hi}, Box{s.lo, s.hi}) >=
+                         kShareFarRatio * std::max(r.diameter_m, s.diameter_m);
+        const Vec3 centre = polygon_centroid(r.polygon);
+        std::array<double, 4> factor{0, 0, 0, 0};
+        double total = 0;
+        for (std::size_t c = 0; c < s.children.size(); ++c) {
+            const Element& child = tree[static_cast<std::size_t>(s.children[c])];
+            if (far) {
+                factor[c] =
+                    sample_kernel(centre, r.normal,
+                                  {polygon_centroid(child.polygon), child.normal, child.area_m2});
+            } else {
+                for (const SamplePoint& x : r.samples) {
+                    factor[c] += x.weight * std::max(0.0, front_point_to_polygon_factor(
+                                                              x.position, x.normal, child.polygon,
+                                                              child.normal));
+                }
+            }
+            total += factor[c];
+        }
+        if (!(total > 0) || !(s.area_m2 > 0)) return;
+        std::array<std::uint8_t, 4> share{};
+        bool even = true;
+        for (std::size_t c = 0; c < s.children.size(); ++c) {
+            const double by_area =
+                255 * tree[static_cast<std::size_t>(s.children[c])].area_m2 / s.area_m2;
+            const double by_factor = 255 * factor[c] / total;
+            const double extrapolated = by_area + kShareExtrapolation * (by_factor - by_area);
+            share[c] = static_cast<std::uint8_t>(std::lround(std::clamp(extrapolated, 0.0, 255.0)));
+            even = even && std::abs(by_factor - by_area) <= 1;
+        }
+        if (!even) l.child_share = share;
+    });
+}
+
 }  // namespace
 
 RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
@@ -423,6 +481,7 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
         }
     }
     out.links = std::move(merged);
+    share_sources(out.links, tree);
     return out;
 }
 

@@ -8,6 +8,7 @@
 // matters little to the sensors (importance).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -18,12 +19,35 @@
 
 namespace radiant {
 
-/// Irradiance on `receiver` = factor × radiosity of `source` (area averages over both).
+/// Irradiance on `receiver` = factor × radiosity of `source` (area averages over both). Where the
+/// source has children, its radiosity is theirs weighted by `child_share` (see handed_radiosity).
 struct Link {
     int receiver;
     int source;
     float factor;
+    /// Each child's share of the factor, in 255ths; all 0: the children's area shares.
+    std::array<std::uint8_t, 4> child_share{};
 };
+
+/// The radiosity `link` hands on, from `value(element)` (its radiosity, or what it has not shot
+/// yet): the source's children's weighted by their shares of the factor where they are set, so
+/// that a source lit unevenly (the floor under a panel, brightest where the panel sees it best)
+/// hands on the light the receiver sees of it, not its mean.
+template <class Value>
+Rgb handed_radiosity(const Link& link, const ElementTree& tree, const Value& value) {
+    const auto& share = link.child_share;
+    if ((share[0] | share[1] | share[2] | share[3]) == 0) return value(link.source);
+    const std::vector<int>& children = tree[static_cast<std::size_t>(link.source)].children;
+    Rgb b{0, 0, 0};
+    double total = 0;
+    for (std::size_t c = 0; c < children.size(); ++c) {
+        const Rgb& v = value(children[c]);
+        for (std::size_t k = 0; k < 3; ++k) b[k] += share[c] * v[k];
+        total += share[c];
+    }
+    for (double& x : b) x /= total;
+    return b;
+}
 
 struct RefinementCriteria {
     double power_epsilon_lm = 0;  ///< a link may carry at most this much uncertain power
@@ -58,6 +82,7 @@ struct RefinementOutcome {
 /// (and lights the new ones); uses `radiosity_max` and `radiosity_min` of the elements as the
 /// source estimate.
 /// Once the tree and links would outgrow `max_bytes`, pairs link where they stand instead.
+/// Links from sources that ended up with children get the children's shares (see Link).
 /// Parallel over candidate pairs; deterministic for any thread count.
 RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
                                const RefinementCriteria& criteria);

@@ -134,7 +134,8 @@ void ProgressiveShooting::send(int patch, std::vector<Rgb>& irradiance) {
     pull_unshot(root);
     for (std::size_t k = first_sent_[p]; k < first_sent_[p + 1]; ++k) {
         const Link& l = links_[sent_[k]];
-        const Rgb& u = unshot_[static_cast<std::size_t>(l.source)];
+        const Rgb u = handed_radiosity(
+            l, tree_, [this](int s) -> const Rgb& { return unshot_[static_cast<std::size_t>(s)]; });
         const auto r = static_cast<std::size_t>(l.receiver);
         const Element& receiver = tree_[r];
         Rgb reflected{0, 0, 0};
