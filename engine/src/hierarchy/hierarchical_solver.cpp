@@ -150,22 +150,17 @@ HierarchicalSystem::LeafLight HierarchicalSystem::patchwise_completed(
     const std::vector<Rgb> change = patchwise_completion_change(weight);
     const LeafLight solution = light();
     LeafLight out = solution;
-    SolverControl quiet = control;
-    quiet.progress = nullptr;
-    quiet.tolerance = kResponseTolerance;
     for (const double sign : {1.0, -1.0}) {
-        spread_.assign(tree_.size(), Rgb{0, 0, 0});
+        std::vector<Rgb> source(tree_.size(), Rgb{0, 0, 0});
         bool any = false;
         for (std::size_t e = 0; e < tree_.size(); ++e) {
             for (int c = 0; c < channels_; ++c) {
-                spread_[e][c] = std::max(0.0, sign * change[e][c]);
-                any = any || spread_[e][c] > 0;
+                source[e][c] = std::max(0.0, sign * change[e][c]);
+                any = any || source[e][c] > 0;
             }
         }
         if (!any) continue;
-        responding_ = true;
-        iterate(quiet, nullptr, true);
-        responding_ = false;
+        respond(std::move(source), control, kResponseTolerance);
         for (std::size_t e = 0; e < tree_.size(); ++e) {
             for (int c = 0; c < channels_; ++c) {
                 out.irradiance[e][c] += sign * irradiance_[e][c];
@@ -173,7 +168,6 @@ HierarchicalSystem::LeafLight HierarchicalSystem::patchwise_completed(
             }
         }
     }
-    spread_ = {};
     irradiance_ = solution.irradiance;
     for (std::size_t e = 0; e < tree_.size(); ++e) tree_[e].radiosity = solution.radiosity[e];
     tree_.pull_up(channels_);  // and each element's radiosity range, which the sensors use
@@ -292,6 +286,21 @@ void HierarchicalSystem::measure_defects() {
             part_closed_[static_cast<std::size_t>(part_[patch])])
             defect_[e] = x.area_m2 * (1 - handed[e]);
     }
+}
+
+// Solves the linked system lit by `source` alone (irradiance per leaf, no emission) to
+// `tolerance`, leaving its answer in the tree and irradiance_; the caller restores the solution.
+HierarchicalOutcome HierarchicalSystem::respond(std::vector<Rgb> source,
+                                                const SolverControl& control, double tolerance) {
+    SolverControl quiet = control;
+    quiet.progress = nullptr;
+    quiet.tolerance = tolerance;
+    spread_ = std::move(source);
+    responding_ = true;
+    const HierarchicalOutcome out = iterate(quiet, nullptr, true);
+    responding_ = false;
+    spread_ = {};
+    return out;
 }
 
 Rgb HierarchicalSystem::outside_exitance(const Element& leaf) const {
@@ -524,23 +533,18 @@ void HierarchicalSystem::conserve(const SolverControl& control, HierarchicalOutc
         for (int c = 0; p >= 0 && c < channels_; ++c)
             received[static_cast<std::size_t>(p)][c] += tree_[e].area_m2 * irradiance[e][c];
     }
-    spread_.assign(tree_.size(), Rgb{0, 0, 0});
+    std::vector<Rgb> u(tree_.size(), Rgb{0, 0, 0});
     for (std::size_t e = 0; e < tree_.size(); ++e) {
         const int p = part_of(tree_[e]);
         for (int c = 0; p >= 0 && c < channels_; ++c) {
             const double sum = received[static_cast<std::size_t>(p)][c];
-            spread_[e][c] = sum > 0 ? irradiance[e][c] / sum : 0;
+            u[e][c] = sum > 0 ? irradiance[e][c] / sum : 0;
         }
     }
     // The correction moves the light by about the defect's share, so z needs only a tolerance
     // that much coarser for the same error in the result.
-    SolverControl quiet = control;
-    quiet.progress = nullptr;
-    quiet.tolerance = std::min(0.5, control.tolerance / out.conservation_defect);
-    responding_ = true;
-    const HierarchicalOutcome z = iterate(quiet, nullptr, true);
-    responding_ = false;
-    spread_ = {};
+    const HierarchicalOutcome z =
+        respond(std::move(u), control, std::min(0.5, control.tolerance / out.conservation_defect));
 
     std::vector<Rgb> seen(parts, Rgb{0, 0, 0});  // dᵀz
     for (std::size_t e = 0; e < tree_.size(); ++e) {

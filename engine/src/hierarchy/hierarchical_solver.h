@@ -77,6 +77,8 @@ private:
     double completion(const Element& leaf, double factor_sum) const;
     std::vector<Rgb> patchwise_completion_change(std::span<const double> weight) const;
     void rebalance(LeafLight& other, const LeafLight& solution) const;
+    HierarchicalOutcome respond(std::vector<Rgb> source, const SolverControl& control,
+                                double tolerance);
     /// Light a leaf gets from outside the links: emission and luminaires, or during a response
     /// solve (conserve(), patchwise_completed()) that solve's source, spread_.
     Rgb outside_exitance(const Element& leaf) const;
@@ -103,7 +105,7 @@ private:
     std::vector<char> part_closed_;
     std::vector<double> defect_;  // per leaf of an enclosed patch: light its links fail to hand on
     bool responding_ = false;     // a response solve is running
-    std::vector<Rgb> spread_;     // its source irradiance (u in conserve())
+    std::vector<Rgb> spread_;     // its source irradiance (see respond())
 };
 
 }  // namespace radiant

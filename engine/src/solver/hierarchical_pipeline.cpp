@@ -237,8 +237,8 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     }
     const bool stopped = linked.stopped || linked.budget_reached || !outcome.converged ||
                          !(error_estimate <= options_.tolerance);
-    // Errors of the links that the mesh check cannot see; they shrink with the tolerance, so
-    // they do not stop the result, but a finer solve can be asked for (refine_to_tolerance).
+    // Errors of the links that the mesh check cannot see; not of the iteration, so they do not
+    // stop the result, but a finer solve can be asked for (refine_to_tolerance).
     if (patchwise) {
         Result surfaces;
         surfaces.surfaces = result.surfaces;
