@@ -38,30 +38,7 @@ HierarchicalSystem::HierarchicalSystem(ElementTree& tree, const std::vector<Link
         for (std::size_t k = first_link_[e]; k < first_link_[e + 1]; ++k) sum += links[k].factor;
         tree[e].link_factor_sum = sum;
     }
-    // Each surface element's factor sum with its ancestors' (a parent comes before its children).
-    std::vector<double> factor_sum(tree.size(), 0.0);
-    for (std::size_t e = 0; e < tree.size(); ++e) {
-        const Element& x = tree[e];
-        if (x.cluster) continue;
-        factor_sum[e] =
-            x.link_factor_sum + (x.depth > 0 ? factor_sum[static_cast<std::size_t>(x.parent)] : 0);
-    }
-    // What each leaf's gathered light is multiplied by, what its factors then sum to, and the
-    // light per unit irradiance each element hands down to its leaves (children come after their
-    // parent).
-    leaf_scale_.assign(tree.size(), 1.0);
-    completed_sum_.assign(tree.size(), 0.0);
-    weight_.assign(tree.size(), 0.0);
-    for (std::size_t e = tree.size(); e-- > 0;) {
-        const Element& x = tree[e];
-        if (x.cluster) continue;
-        if (x.leaf()) {
-            leaf_scale_[e] = completion(x, factor_sum[e]);
-            completed_sum_[e] = factor_sum[e] * leaf_scale_[e];
-            weight_[e] = x.area_m2 * leaf_scale_[e];
-        }
-        if (x.depth > 0) weight_[static_cast<std::size_t>(x.parent)] += weight_[e];
-    }
+    completion_ = complete_leaves(tree, front_share);
     // ‖operator‖∞: a leaf's new radiosity is ρ times a weighted sum of radiosities with weights
     // summing to S (its own and its ancestors' link factors), or to 1 where S is completed.
     for (std::size_t e = 0; e < tree.size(); ++e) {
@@ -70,26 +47,12 @@ HierarchicalSystem::HierarchicalSystem(ElementTree& tree, const std::vector<Link
         double rho = 0;
         for (int c = 0; c < channels; ++c)
             rho = std::max(rho, x.reflectance[static_cast<std::size_t>(c)]);
-        q_inf_ = std::max(q_inf_, rho * completed_sum_[e]);
+        q_inf_ = std::max(q_inf_, rho * completion_.completed_sum[e]);
         total_area_ += x.area_m2;
         ++leaves_;
     }
     find_parts();
     measure_defects();
-}
-
-// A leaf's factors are completed to sum to the share of its hemisphere that ends on surface
-// fronts: 1 in a closed enclosure, less where it sees an opening or the back of a one-sided
-// panel. Its links' own sums are off by a few per cent (sampled kernels, links made at other
-// levels); the rays' share is known far better, except where little of the hemisphere is
-// covered (its error relative to the share grows), so a leaf that sees mostly nothing keeps its
-// own sum. No leaf's may sum to more than 1 — light from everything it sees is at most all its
-// hemisphere — though a cluster's disk kernels, or a near-singular source, can make it look so,
-// and a sum above 1/ρ would let light grow unbounded.
-double HierarchicalSystem::completion(const Element& leaf, double factor_sum) const {
-    const double share = front_share_[static_cast<std::size_t>(leaf.patch)];
-    if (factor_sum > 0 && completes(share)) return share / factor_sum;
-    return factor_sum > 1 ? 1 / factor_sum : 1;
 }
 
 HierarchicalSystem::LeafLight HierarchicalSystem::light() const {
@@ -98,45 +61,51 @@ HierarchicalSystem::LeafLight HierarchicalSystem::light() const {
     return out;
 }
 
-// Completing each leaf by its own factor sum S (light × share / S) is not completing the patch:
-// a leaf's sum mixes its ancestors' links, averaged over larger areas, with its own, so the sums
-// of one patch's leaves scatter (0.9–1.4 in a unit cube) about their mean, and the mean of
-// share / S is above share / mean S (Jensen): the floor of a closed cube comes out 0.2 % bright.
-// Completing per root patch instead — each leaf gets its own gathered light plus its missing
-// factor (share − S) times the patch's light per unit factor — is as plausible. This is the
-// change in each leaf's irradiance that makes, before the change is reflected on, times its
-// patch's weight: a patch the sensors need less was linked to 1/weight of the accuracy.
-std::vector<Rgb> HierarchicalSystem::patchwise_completion_change(
-    std::span<const double> weight) const {
+// The solution completes each leaf's factor sum S through its inherited links first (see
+// leaf_completion.h). Completing per root patch instead — each leaf gets the light through its
+// links unscaled plus its missing factor (share − S) times the patch's light per unit factor —
+// is another plausible answer: a leaf's sum mixes its ancestors' links, averaged over larger
+// areas, with its own, so the sums of one patch's leaves scatter (0.9–1.4 in a unit cube) about
+// their mean. This is the change in each leaf's irradiance that makes, before the change is
+// reflected on, times its patch's weight: a patch the sensors need less was linked to 1/weight of
+// the accuracy. Gathers afresh from the solution's radiosity.
+std::vector<Rgb> HierarchicalSystem::patchwise_completion_change(std::span<const double> weight) {
+    gather();
+    // Light through each element's links and its ancestors' (a parent comes before its children).
+    std::vector<Rgb> linked(tree_.size(), Rgb{0, 0, 0});
+    for (std::size_t e = 0; e < tree_.size(); ++e) {
+        const Element& x = tree_[e];
+        if (x.cluster) continue;
+        linked[e] = x.gathered;
+        if (x.depth == 0) continue;
+        const Rgb& above = linked[static_cast<std::size_t>(x.parent)];
+        for (int c = 0; c < channels_; ++c) linked[e][c] += above[c];
+    }
     const std::size_t patches = front_share_.size();
     std::vector<Rgb> gathered(patches, Rgb{0, 0, 0});  // Σ A·(light through links), per patch
     std::vector<double> factors(patches, 0.0);         // Σ A·S
     auto completed = [this](std::size_t e) {
         const Element& x = tree_[e];
-        return !x.cluster && x.leaf() && leaf_scale_[e] > 0 && completed_sum_[e] > 0 &&
+        return !x.cluster && x.leaf() && completion_.factor_sum[e] > 0 &&
                completes(front_share_[static_cast<std::size_t>(x.patch)]);
-    };
-    auto linked_light = [this](std::size_t e, int c) {
-        return (irradiance_[e][c] - tree_[e].luminaire_irradiance[c]) / leaf_scale_[e];
     };
     for (std::size_t e = 0; e < tree_.size(); ++e) {
         if (!completed(e)) continue;
         const Element& x = tree_[e];
         const auto p = static_cast<std::size_t>(x.patch);
-        factors[p] += x.area_m2 * completed_sum_[e] / leaf_scale_[e];
-        for (int c = 0; c < channels_; ++c) gathered[p][c] += x.area_m2 * linked_light(e, c);
+        factors[p] += x.area_m2 * completion_.factor_sum[e];
+        for (int c = 0; c < channels_; ++c) gathered[p][c] += x.area_m2 * linked[e][c];
     }
     std::vector<Rgb> change(tree_.size(), Rgb{0, 0, 0});
     for (std::size_t e = 0; e < tree_.size(); ++e) {
         if (!completed(e)) continue;
         const auto p = static_cast<std::size_t>(tree_[e].patch);
-        const double missing = front_share_[p] - completed_sum_[e] / leaf_scale_[e];
+        const double missing = front_share_[p] - completion_.factor_sum[e];
         const double w = p < weight.size() ? weight[p] : 1.0;
         for (int c = 0; c < channels_; ++c) {
             const double per_factor = factors[p] > 0 ? gathered[p][c] / factors[p] : 0;
-            const double light = linked_light(e, c);
-            change[e][c] =
-                w * (std::max(0.0, light + missing * per_factor) - light * leaf_scale_[e]);
+            const double solved = irradiance_[e][c] - tree_[e].luminaire_irradiance[c];
+            change[e][c] = w * (std::max(0.0, linked[e][c] + missing * per_factor) - solved);
         }
     }
     return change;
@@ -243,7 +212,7 @@ void HierarchicalSystem::find_parts() {
         if (x.cluster || !x.leaf()) continue;
         const auto k = static_cast<std::size_t>(part_[static_cast<std::size_t>(x.patch)]);
         part_area_[k] += x.area_m2;
-        escape[k] += x.area_m2 * std::max(0.0, 1 - completed_sum_[e]);
+        escape[k] += x.area_m2 * std::max(0.0, 1 - completion_.completed_sum[e]);
     }
     part_closed_.resize(part_area_.size());
     for (std::size_t k = 0; k < part_area_.size(); ++k)
@@ -254,9 +223,10 @@ void HierarchicalSystem::find_parts() {
 // exactly (furnaces stay right at ρ → 1), but it cannot give reciprocity: a source whose
 // factors come out low hands on less than all its light, and the room absorbs less than it
 // emits. Leaf j hands on, per unit of its radiosity, Σ K·W_r over the links from it and its
-// ancestors, each source's share by area (W_r = weight_[r]: the area of receiver r's leaves,
-// each times its completion). In a closed part, a leaf of an enclosed patch sees only fronts
-// of surfaces, so all its light should land: its defect is its area minus what it hands on.
+// ancestors, each source's share by area (W_r: the light per unit irradiance receiver r passes
+// on to its leaves, see LeafCompletion::weight). In a closed part, a leaf of an enclosed patch
+// sees only fronts of surfaces, so all its light should land: its defect is its area minus what
+// it hands on.
 // Elsewhere some of its light may rightly leave (an opening, the back of a one-sided panel):
 // no defect is known.
 void HierarchicalSystem::measure_defects() {
@@ -264,7 +234,7 @@ void HierarchicalSystem::measure_defects() {
     defect_.assign(n, 0.0);
     std::vector<double> handed(n, 0.0);  // per unit area of the source
     for (const Link& l : links_) {
-        const double light = l.factor * weight_[static_cast<std::size_t>(l.receiver)];
+        const double light = l.factor * completion_.weight[static_cast<std::size_t>(l.receiver)];
         const auto& share = l.child_share;
         const int shares = share[0] + share[1] + share[2] + share[3];
         if (shares == 0) {
@@ -327,9 +297,9 @@ void HierarchicalSystem::gather() {
 
 void HierarchicalSystem::push(int index, const Rgb& down, Residual& residual) {
     Element& e = tree_[static_cast<std::size_t>(index)];
-    Rgb h = down;
-    for (int c = 0; c < 3; ++c) h[c] += e.gathered[c];
     if (!e.leaf()) {
+        Rgb h = down;
+        for (int c = 0; c < 3; ++c) h[c] += e.gathered[c];
         Rgb sum{0, 0, 0};
         double area = 0;
         for (const int child : e.children) {
@@ -342,12 +312,12 @@ void HierarchicalSystem::push(int index, const Rgb& down, Residual& residual) {
         for (int k = 0; k < 3; ++k) self.radiosity[k] = area > 0 ? sum[k] / area : 0;
         return;
     }
-    const double scale = leaf_scale_[static_cast<std::size_t>(index)];
-    Rgb& irradiance = irradiance_[static_cast<std::size_t>(index)];
-    const Rgb exitance = outside_exitance(e),
-              outside = outside_irradiance(e, static_cast<std::size_t>(index));
+    const auto i = static_cast<std::size_t>(index);
+    const double own = completion_.own_scale[i], inherited = completion_.inherited_scale[i];
+    Rgb& irradiance = irradiance_[i];
+    const Rgb exitance = outside_exitance(e), outside = outside_irradiance(e, i);
     for (int c = 0; c < channels_; ++c) {
-        irradiance[c] = h[c] * scale + outside[c];
+        irradiance[c] = e.gathered[c] * own + down[c] * inherited + outside[c];
         const double b = exitance[c] + e.reflectance[c] * irradiance[c];
         const double change = std::abs(b - e.radiosity[c]);
         residual.inf[c] = std::max(residual.inf[c], change);
@@ -399,8 +369,7 @@ HierarchicalOutcome HierarchicalSystem::solve(const SolverControl& control,
         out.converged = true;
         return out;
     }
-    ProgressiveShooting shooting(tree_, links_, completed_sum_, leaf_scale_, weight_,
-                                 enclosed_patch_.size(), channels_);
+    ProgressiveShooting shooting(tree_, links_, completion_, enclosed_patch_.size(), channels_);
     std::array<double, 3> residual = shooting.run(control, publish, irradiance_);
     for (double& r : residual) r *= q_inf_;
     out.error_estimate = bound(residual);

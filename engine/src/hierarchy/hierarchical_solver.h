@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hierarchy/element_tree.h"
+#include "hierarchy/leaf_completion.h"
 #include "hierarchy/link_refinement.h"
 #include "solver/solver.h"
 
@@ -24,18 +25,13 @@ struct HierarchicalOutcome {
     double conservation_defect = 0;
 };
 
-/// The solver completes the factor sums of a patch whose hemisphere ends on surface fronts
-/// over at least this share of it (see HierarchicalSystem::completion).
-constexpr double kMinFrontShare = 0.5;
-inline bool completes(double front_share) { return front_share >= kMinFrontShare; }
-
 class HierarchicalSystem {
 public:
     /// `enclosed_patch[p]` marks root patches in a closed enclosure: their leaves' gathered
     /// factors are completed to exactly 1 (as the dense transport does point by point), since
     /// an error δ in that sum costs ρδ/(1−ρ) and ρ may be 0.999. `front_share[p]`: the share of
     /// each root patch's hemisphere that ends on surface fronts (1 where enclosed), what the
-    /// others' are completed to (see completion()).
+    /// others' are completed to (see complete_leaves).
     HierarchicalSystem(ElementTree& tree, const std::vector<Link>& links,
                        const std::vector<char>& enclosed_patch,
                        const std::vector<double>& front_share, int channels);
@@ -74,8 +70,7 @@ private:
     void find_parts();
     void measure_defects();
     void conserve(const SolverControl& control, HierarchicalOutcome& out);
-    double completion(const Element& leaf, double factor_sum) const;
-    std::vector<Rgb> patchwise_completion_change(std::span<const double> weight) const;
+    std::vector<Rgb> patchwise_completion_change(std::span<const double> weight);
     void rebalance(LeafLight& other, const LeafLight& solution) const;
     HierarchicalOutcome respond(std::vector<Rgb> source, const SolverControl& control,
                                 double tolerance);
@@ -91,10 +86,8 @@ private:
     const std::vector<double>& front_share_;
     int channels_;
     std::vector<Rgb> irradiance_;
-    std::vector<Rgb> change_;            // each leaf's change in the last sweep
-    std::vector<double> leaf_scale_;     // what a leaf's gathered light is multiplied by
-    std::vector<double> completed_sum_;  // per leaf: its factors' sum times leaf_scale_
-    std::vector<double> weight_;         // Σ over an element's leaves of area × leaf_scale_
+    std::vector<Rgb> change_;  // each leaf's change in the last sweep
+    LeafCompletion completion_;
     double q_inf_ = 0;
     double total_area_ = 0;  // of the leaves
     std::size_t leaves_ = 0;

@@ -23,16 +23,9 @@ struct Candidate {
 }  // namespace
 
 ProgressiveShooting::ProgressiveShooting(ElementTree& tree, const std::vector<Link>& links,
-                                         const std::vector<double>& completed_sum,
-                                         const std::vector<double>& scale,
-                                         const std::vector<double>& weight, std::size_t n_patches,
+                                         const LeafCompletion& completion, std::size_t n_patches,
                                          int channels)
-    : tree_(tree),
-      links_(links),
-      completed_sum_(completed_sum),
-      scale_(scale),
-      weight_(weight),
-      channels_(channels) {
+    : tree_(tree), links_(links), completion_(completion), channels_(channels) {
     root_of_patch_.assign(n_patches, -1);
     for (std::size_t e = 0; e < tree.size(); ++e) {
         const Element& x = tree[e];
@@ -145,7 +138,7 @@ void ProgressiveShooting::send(int patch, std::vector<Rgb>& irradiance) {
             reflected[c] = receiver.reflectance[c] * received;
         }
         const auto q = static_cast<std::size_t>(receiver.patch);
-        power_[q] += weight_[r] * std::abs(photometric(reflected, channels_));
+        power_[q] += completion_.weight[r] * std::abs(photometric(reflected, channels_));
         if (!is_touched_[q]) {
             is_touched_[q] = 1;
             touched_.push_back(receiver.patch);
@@ -159,16 +152,18 @@ void ProgressiveShooting::send(int patch, std::vector<Rgb>& irradiance) {
 // irradiance, radiosity and unshot radiosity alike.
 void ProgressiveShooting::settle(int index, const Rgb& down, std::vector<Rgb>& irradiance) {
     const auto e = static_cast<std::size_t>(index);
-    Rgb h = down;
-    for (int c = 0; c < 3; ++c) h[c] += pending_[e][c];
+    const Rgb own = pending_[e];
     pending_[e] = Rgb{0, 0, 0};
     Element& x = tree_[e];
     if (!x.leaf()) {
+        Rgb h = down;
+        for (int c = 0; c < 3; ++c) h[c] += own[c];
         for (const int child : x.children) settle(child, h, irradiance);
         return;
     }
     for (int c = 0; c < channels_; ++c) {
-        const double received = h[c] * scale_[e];
+        const double received =
+            own[c] * completion_.own_scale[e] + down[c] * completion_.inherited_scale[e];
         const double reflected = x.reflectance[c] * received;
         irradiance[e][c] += received;
         x.radiosity[c] += reflected;
@@ -214,7 +209,7 @@ void ProgressiveShooting::publish_with_ambient(const std::function<void()>& publ
         if (x.cluster || !x.leaf()) continue;
         leaves.push_back(e);
         area.push_back(x.area_m2);
-        seen.push_back(std::min(1.0, completed_sum_[e]));
+        seen.push_back(std::min(1.0, completion_.completed_sum[e]));
     }
     Rgb ambient{0, 0, 0};
     std::vector<double> unshot(leaves.size()), rho(leaves.size());

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hierarchy/element_tree.h"
+#include "hierarchy/leaf_completion.h"
 #include "hierarchy/link_refinement.h"
 #include "solver/solver.h"
 
@@ -22,13 +23,10 @@ class ProgressiveShooting {
 public:
     /// Every link's source is a surface element (a cluster's links pass on the light of the
     /// root patches its samples lie on, see link_refinement), so each belongs to one patch.
-    /// `scale[e]`: what leaf e's gathered factors are multiplied by (their completion);
-    /// `completed_sum[e]`: what they then sum to, the share of its hemisphere they cover;
-    /// `weight[e]`: Σ over the leaves below e of area × scale, the light per unit irradiance
-    /// that element e passes on to its leaves; `n_patches`: the root patches' count.
+    /// `completion`: how the leaves' gathered light is scaled (see leaf_completion.h);
+    /// `n_patches`: the root patches' count.
     ProgressiveShooting(ElementTree& tree, const std::vector<Link>& links,
-                        const std::vector<double>& completed_sum, const std::vector<double>& scale,
-                        const std::vector<double>& weight, std::size_t n_patches, int channels);
+                        const LeafCompletion& completion, std::size_t n_patches, int channels);
 
     /// Lights the leaves with the source term (emission, reflected luminaire light), then shoots
     /// patch after patch, the one with the most unshot power first, until the shots have sent
@@ -51,9 +49,7 @@ private:
 
     ElementTree& tree_;
     const std::vector<Link>& links_;
-    const std::vector<double>& completed_sum_;
-    const std::vector<double>& scale_;
-    const std::vector<double>& weight_;
+    const LeafCompletion& completion_;
     int channels_;
     double omega_ = 1;                     // over-relaxation (see over_relaxation)
     std::vector<int> root_of_patch_;       // −1 for patches with no element (hidden)

@@ -8,14 +8,14 @@ set xlabel 'seconds'
 set ylabel 'RMS relative error'
 set title 'radiant-bench: error against time'
 $d0 << EOD
-1.14649 0.00301344
-1.61093 0.00231696
-3.10351 0.00151799
+1.12552 0.00185233
+1.56204 0.000904801
+2.98455 0.000553319
 EOD
 $d1 << EOD
-5.04224 0.00197238
-5.2417 0.00288793
-6.23313 0.00236116
+4.34317 0.00102214
+4.82386 0.000585492
+6.00232 0.000722915
 EOD
 plot $d0 with linespoints title 'office-x1 hierarchical', \
      $d1 with linespoints title 'office-x4 hierarchical'
