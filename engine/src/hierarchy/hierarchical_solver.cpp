@@ -86,8 +86,9 @@ std::vector<Rgb> HierarchicalSystem::patchwise_completion_change(std::span<const
     std::vector<double> factors(patches, 0.0);         // Σ A·S
     auto completed = [this](std::size_t e) {
         const Element& x = tree_[e];
-        return !x.cluster && x.leaf() && completion_.factor_sum[e] > 0 &&
-               completes(front_share_[static_cast<std::size_t>(x.patch)]);
+        return !x.cluster && x.leaf() &&
+               completes_leaf(front_share_[static_cast<std::size_t>(x.patch)],
+                              completion_.factor_sum[e]);
     };
     for (std::size_t e = 0; e < tree_.size(); ++e) {
         if (!completed(e)) continue;
@@ -235,8 +236,7 @@ void HierarchicalSystem::measure_defects() {
     std::vector<double> handed(n, 0.0);  // per unit area of the source
     for (const Link& l : links_) {
         const double light = l.factor * completion_.weight[static_cast<std::size_t>(l.receiver)];
-        const auto& share = l.child_share;
-        const int shares = share[0] + share[1] + share[2] + share[3];
+        const int shares = l.share_total();
         if (shares == 0) {
             handed[static_cast<std::size_t>(l.source)] += light;
             continue;
@@ -244,7 +244,7 @@ void HierarchicalSystem::measure_defects() {
         // Shared among the children: each hands on its share (see handed_radiosity).
         const std::vector<int>& children = tree_[static_cast<std::size_t>(l.source)].children;
         for (std::size_t c = 0; c < children.size(); ++c)
-            handed[static_cast<std::size_t>(children[c])] += light * share[c] / shares;
+            handed[static_cast<std::size_t>(children[c])] += light * l.child_share[c] / shares;
     }
     for (std::size_t e = 0; e < n; ++e) {
         const Element& x = tree_[e];

@@ -17,7 +17,7 @@ constexpr double kMaxInheritedChange = 2;
 // all its hemisphere — though a cluster's disk kernels, or a near-singular source, can make it
 // look so, and a sum above 1/ρ would let light grow unbounded.
 double target_sum(double front_share, double factor_sum) {
-    if (factor_sum > 0 && completes(front_share)) return front_share;
+    if (completes_leaf(front_share, factor_sum)) return front_share;
     return std::min(factor_sum, 1.0);
 }
 

@@ -17,6 +17,11 @@ namespace radiant {
 /// over at least this share of it (see complete_leaves).
 constexpr double kMinFrontShare = 0.5;
 inline bool completes(double front_share) { return front_share >= kMinFrontShare; }
+/// Whether a leaf whose factors sum to `factor_sum` is completed to its patch's front share
+/// (otherwise it keeps its sum, at most 1).
+inline bool completes_leaf(double front_share, double factor_sum) {
+    return factor_sum > 0 && completes(front_share);
+}
 
 struct LeafCompletion {
     std::vector<double> own_scale;        ///< leaves: the light through their own links × this

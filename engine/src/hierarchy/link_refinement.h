@@ -27,6 +27,10 @@ struct Link {
     float factor;
     /// Each child's share of the factor, in 255ths; all 0: the children's area shares.
     std::array<std::uint8_t, 4> child_share{};
+    /// Σ child_share; 0 when the children hand on light by their areas.
+    int share_total() const {
+        return child_share[0] + child_share[1] + child_share[2] + child_share[3];
+    }
 };
 
 /// The radiosity `link` hands on, from `value(element)` (its radiosity, or what it has not shot
@@ -35,15 +39,13 @@ struct Link {
 /// hands on the light the receiver sees of it, not its mean.
 template <class Value>
 Rgb handed_radiosity(const Link& link, const ElementTree& tree, const Value& value) {
-    const auto& share = link.child_share;
-    if ((share[0] | share[1] | share[2] | share[3]) == 0) return value(link.source);
+    const int total = link.share_total();
+    if (total == 0) return value(link.source);
     const std::vector<int>& children = tree[static_cast<std::size_t>(link.source)].children;
     Rgb b{0, 0, 0};
-    double total = 0;
     for (std::size_t c = 0; c < children.size(); ++c) {
         const Rgb& v = value(children[c]);
-        for (std::size_t k = 0; k < 3; ++k) b[k] += share[c] * v[k];
-        total += share[c];
+        for (std::size_t k = 0; k < 3; ++k) b[k] += link.child_share[c] * v[k];
     }
     for (double& x : b) x /= total;
     return b;
