@@ -8,13 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "hierarchy/element_tree.h"
 #include "hierarchy/sensor_importance.h"
-#include "meshing/patch_mesh.h"
-#include "scene/prepared_scene.h"
+#include "linkable_scene.h"
 #include "scene_builder.h"
 #include "solve_with.h"
-#include "visibility/visibility.h"
 
 namespace radiant {
 namespace {
@@ -44,30 +41,12 @@ Scene two_sealed_rooms(bool sensors_in_b) {
     return scene;
 }
 
-// The scene as the hierarchical pipeline sees it: root patches, their cluster tree, and the
-// visibility's triangles (fans of the pieces) with the piece of each.
-struct Linkable {
-    explicit Linkable(const Scene& s) : scene(prepare_scene(s)), roots(scene, {1.0, 3000, 0}) {
-        std::vector<Triangle> triangles;
-        for (std::size_t p = 0; p < scene.pieces.size(); ++p) {
-            const std::vector<Vec3>& v = scene.pieces[p].vertices;
-            for (std::size_t k = 1; k + 1 < v.size(); ++k) {
-                triangles.push_back({v[0], v[k], v[k + 1]});
-                triangle_piece.push_back(static_cast<int>(p));
-            }
-        }
-        visibility = make_embree_visibility(triangles);
-        tree = std::make_unique<ElementTree>(scene, roots, *visibility, 0.25, 1);
-    }
+// The scene as the hierarchical pipeline links it, and its sensors' importance.
+struct Linkable : testing::LinkableScene {
+    using LinkableScene::LinkableScene;
     ImportanceEstimate importance() const {
         return estimate_sensor_importance(scene, roots, *tree, *visibility, triangle_piece, 1);
     }
-
-    PreparedScene scene;
-    PatchMesh roots;
-    std::vector<int> triangle_piece;
-    std::unique_ptr<Visibility> visibility;
-    std::unique_ptr<ElementTree> tree;
 };
 
 TEST(SensorImportance, WithoutSensorsEverySurfaceGetsFullWeight) {
