@@ -141,21 +141,21 @@ private:
     // desk's end, sees that side from the end). The straddling one is split to find that part.
     static Verdict unseen_split(const Element& r, const Element& s, bool split_r, bool split_s) {
         if (r.cluster || s.cluster) return {};
+        auto straddles = [](const Element& a, const Element& b) {
+            return has_corner_on(a, b, 1) && has_corner_on(a, b, -1);
+        };
         if (split_r && straddles(r, s)) return {Decision::split_receiver, {}};
         if (split_s && straddles(s, r)) return {Decision::split_source, {}};
         return {};
     }
 
-    // Whether `a` has corners on both sides of `b`'s plane.
-    static bool straddles(const Element& a, const Element& b) {
+    // Whether a corner of surface `a` lies in front of (`side` 1) or behind (−1) surface `b`'s
+    // plane, beyond rounding.
+    static bool has_corner_on(const Element& a, const Element& b, double side) {
         const double eps = 1e-9 * (a.diameter_m + b.diameter_m);
-        bool front = false, back = false;
-        for (const Vec3& v : a.polygon) {
-            const double h = dot(v - b.polygon[0], b.normal);
-            front = front || h > eps;
-            back = back || h < -eps;
-        }
-        return front && back;
+        return std::any_of(a.polygon.begin(), a.polygon.end(), [&](const Vec3& v) {
+            return side * dot(v - b.polygon[0], b.normal) > eps;
+        });
     }
 
     // The link hands the receiver the source's mean radiosity; where the source's radiosity and
@@ -224,15 +224,7 @@ private:
 
     // Light passes only between elements that lie (partly) in front of each other.
     bool may_exchange(const Element& r, const Element& s) const {
-        if (!r.cluster && !s.cluster) {
-            const double eps = 1e-9 * (r.diameter_m + s.diameter_m);
-            auto in_front = [eps](const Element& a, const Element& b) {
-                return std::any_of(b.polygon.begin(), b.polygon.end(), [&](const Vec3& v) {
-                    return dot(v - a.polygon[0], a.normal) > eps;
-                });
-            };
-            return in_front(r, s) && in_front(s, r);
-        }
+        if (!r.cluster && !s.cluster) return has_corner_on(s, r, 1) && has_corner_on(r, s, 1);
         const Element* surface = r.cluster ? (s.cluster ? nullptr : &s) : &r;
         const Element* other = surface == &r ? &s : &r;
         if (!surface) return true;
