@@ -3,11 +3,13 @@
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "hierarchy/element_tree.h"
 #include "meshing/patch_mesh.h"
 #include "scene/prepared_scene.h"
+#include "visibility/occluder_triangles.h"
 #include "visibility/visibility.h"
 
 namespace radiant::testing {
@@ -16,14 +18,8 @@ struct LinkableScene {
     /// Root patches of about `root_edge_m`; elements split down to `min_edge_m`.
     explicit LinkableScene(const Scene& s, double root_edge_m = 1.0, double min_edge_m = 0.25)
         : scene(prepare_scene(s)), roots(scene, {root_edge_m, 3000, 0}) {
-        std::vector<Triangle> triangles;
-        for (std::size_t p = 0; p < scene.pieces.size(); ++p) {
-            const std::vector<Vec3>& v = scene.pieces[p].vertices;
-            for (std::size_t k = 1; k + 1 < v.size(); ++k) {
-                triangles.push_back({v[0], v[k], v[k + 1]});
-                triangle_piece.push_back(static_cast<int>(p));
-            }
-        }
+        auto [triangles, piece] = occluder_triangles(scene);
+        triangle_piece = std::move(piece);
         visibility = make_embree_visibility(triangles);
         tree = std::make_unique<ElementTree>(scene, roots, *visibility, min_edge_m, 1);
     }

@@ -18,6 +18,7 @@
 #include "solution/surface_summary.h"
 #include "solver/shooting_solver.h"
 #include "solver/solver.h"
+#include "visibility/occluder_triangles.h"
 
 namespace radiant {
 namespace {
@@ -58,20 +59,6 @@ constexpr std::uint64_t kFirstRefinedMeshVersion = 3;
 // smooth.
 double richardson_estimate(const Result& fine, const Result& coarse, double ratio) {
     return kCheckMargin * largest_relative_difference(fine, coarse) / (ratio - 1);
-}
-
-// All pieces as triangle fans, and the piece of each triangle.
-std::pair<std::vector<Triangle>, std::vector<int>> occluder_triangles(const PreparedScene& scene) {
-    std::vector<Triangle> tris;
-    std::vector<int> piece;
-    for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
-        const auto& v = scene.pieces[i].vertices;
-        for (std::size_t k = 1; k + 1 < v.size(); ++k) {
-            tris.push_back({v[0], v[k], v[k + 1]});
-            piece.push_back(static_cast<int>(i));
-        }
-    }
-    return {tris, piece};
 }
 
 }  // namespace
