@@ -62,15 +62,23 @@ double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, 
                                      rng, rays);
 }
 
-double Transport::point_to_patch(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
-                                 std::uint64_t& rays) const {
+Transport::PointView Transport::point_view(const Vec3& x, const Vec3& n, std::size_t j,
+                                           std::uint64_t key, std::uint64_t& rays) const {
     const PatchGeometry& src = patches_.patch(j);
-    if (src.hidden) return 0;
-    const double f = front_factor(x, n, src);
-    if (f <= 0) return 0;
-    if (!culling_.maybe_blocked_from_point(x, n, src.piece, src.vertices, src.normal)) return f;
-    const int m = patch_emits(j) ? options_.emitter_rays_per_point : options_.rays_per_point;
-    return f * visible_fraction(x, n, j, m, key, rays);
+    PointView v;
+    if (src.hidden) return v;
+    v.factor = std::max(0.0, front_factor(x, n, src));
+    if (v.factor <= 0) return v;
+    if (!culling_.maybe_blocked_from_point(x, n, src.piece, src.vertices, src.normal)) return v;
+    v.rays = patch_emits(j) ? options_.emitter_rays_per_point : options_.rays_per_point;
+    v.fraction = visible_fraction(x, n, j, v.rays, key, rays);
+    return v;
+}
+
+Rgb Transport::resample(const SampledViews& views, const Vec3& x, const Vec3& n, double sigma,
+                        std::uint64_t key, std::uint64_t& rays) const {
+    return views.resample(visibility_, x, n, sigma, options_.max_rays_per_point, options_.seed, key,
+                          rays);
 }
 
 void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays,

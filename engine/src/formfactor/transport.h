@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "formfactor/quadrature.h"
+#include "formfactor/sampled_views.h"
 #include "meshing/patch_mesh.h"
 #include "scene/prepared_scene.h"
 #include "visibility/occlusion_culling.h"
@@ -23,6 +24,7 @@ struct TransportOptions {
     int rays_per_link = 16;
     int rays_per_point = 4;           ///< from a sensor point to a patch
     int emitter_rays_per_point = 16;  ///< to emitting patches, where visibility shows most
+    int max_rays_per_point = 256;     ///< when a sensor's views are sampled again
     std::uint64_t seed = 1;
 };
 
@@ -35,10 +37,21 @@ public:
               const OcclusionCulling& culling, TransportOptions options,
               std::vector<char> enclosed);
 
-    /// F(x→P_j)·V̂ for a point x with unit normal n: the fraction of a cosine-weighted hemisphere
-    /// at x covered by patch j. `key` seeds the ray samples. Counts rays into `rays`.
-    double point_to_patch(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
-                          std::uint64_t& rays) const;
+    /// A point x's (unit normal n) view of patch j: the unoccluded fraction of its cosine-weighted
+    /// hemisphere that patch j covers, and the share of it sampled visible (`rays` 0: not
+    /// sampled, proven clear or facing away). `key` seeds the ray samples; counts rays.
+    struct PointView {
+        double factor = 0;
+        double fraction = 1;
+        int rays = 0;
+    };
+    PointView point_view(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
+                         std::uint64_t& rays) const;
+
+    /// The change of x's irradiance when its views are sampled again to a standard deviation of
+    /// `sigma` lux (see SampledViews); `key` as for its views.
+    Rgb resample(const SampledViews& views, const Vec3& x, const Vec3& n, double sigma,
+                 std::uint64_t key, std::uint64_t& rays) const;
 
     /// Row i of the form-factor matrix (receiver i, all sources) into `row` (size = patches).
     /// `parallel` spreads the sources over the calling arena's threads (for a single row, as

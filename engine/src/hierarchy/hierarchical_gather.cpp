@@ -10,9 +10,11 @@
 #include "formfactor/luminaire_light.h"
 #include "formfactor/point_polygon.h"
 #include "formfactor/quadrature.h"
+#include "formfactor/sampled_views.h"
 #include "formfactor/shadow_rays.h"
 #include "radiant/box.h"
 #include "solution/sensors.h"
+#include "solution/surface_summary.h"
 
 namespace radiant {
 namespace {
@@ -25,8 +27,11 @@ public:
                 int channels)
         : tree_(tree), visibility_(visibility), criteria_(c), channels_(channels) {}
 
-    Rgb at(const Vec3& x, const Vec3& n, std::uint64_t key, std::uint64_t& rays) const {
+    /// `known`: the lux the point gets from elsewhere (luminaires), part of its noise budget.
+    Rgb at(const Vec3& x, const Vec3& n, std::uint64_t key, double known,
+           std::uint64_t& rays) const {
         Rgb h{0, 0, 0};
+        SampledViews partial;
         std::vector<int> stack{tree_.top()};
         while (!stack.empty()) {
             const int index = stack.back();
@@ -37,7 +42,7 @@ public:
             if (!e.cluster && dot(x - e.polygon[0], e.normal) <= 0) continue;
             double factor = 0;
             if (e.leaf()) {
-                factor = surface_factor(x, n, e, index, key, true, rays);
+                factor = leaf_factor(x, n, e, index, key, partial, rays);
             } else {
                 const double d = distance(box, Box{x, x});
                 const double bound = d > 0 ? std::min(1.0, e.area_m2 / (kPi * d * d)) : 1.0;
@@ -46,23 +51,50 @@ public:
                     continue;
                 }
                 factor = e.cluster ? cluster_factor(x, n, e, rays)
-                                   : surface_factor(x, n, e, index, key, false, rays);
+                                   : surface_factor(x, n, e, index, key, rays).product();
             }
             for (int c = 0; c < channels_; ++c) h[c] += factor * e.radiosity[c];
         }
+        const double sigma = criteria_.noise_share * (known + photometric(h, channels_));
+        const Rgb change = partial.resample(visibility_, x, n, sigma, criteria_.max_rays_per_point,
+                                            criteria_.seed, key, rays);
+        for (int c = 0; c < channels_; ++c) h[c] = std::max(0.0, h[c] + change[c]);
         return h;
     }
 
 private:
-    double surface_factor(const Vec3& x, const Vec3& n, const Element& e, int index,
-                          std::uint64_t key, bool exact_leaf, std::uint64_t& rays) const {
-        const double f = front_point_to_polygon_factor(x, n, e.polygon, e.normal);
-        if (f <= 0 || criteria_.unoccluded) return std::max(f, 0.0);
-        const int m =
-            exact_leaf && e.emits ? criteria_.emitter_rays_per_point : criteria_.rays_per_point;
+    struct View {
+        double factor = 0;    ///< Lambert's, unoccluded
+        double fraction = 1;  ///< sampled visible share
+        int rays = 0;
+        Vec3 centre;
+        double product() const { return factor * fraction; }
+    };
+
+    View surface_factor(const Vec3& x, const Vec3& n, const Element& e, int index,
+                        std::uint64_t key, std::uint64_t& rays, bool emitter_rays = false) const {
+        View v;
+        v.factor = std::max(0.0, front_point_to_polygon_factor(x, n, e.polygon, e.normal));
+        if (v.factor <= 0 || criteria_.unoccluded) return v;
+        v.rays = emitter_rays ? criteria_.emitter_rays_per_point : criteria_.rays_per_point;
+        v.centre = polygon_centroid(e.polygon);
         SampleStream rng(criteria_.seed, key, static_cast<std::uint64_t>(index));
-        return f * visible_fraction(visibility_, x, n, e.polygon, polygon_centroid(e.polygon),
-                                    e.normal, m, rng, rays);
+        v.fraction =
+            visible_fraction(visibility_, x, n, e.polygon, v.centre, e.normal, v.rays, rng, rays);
+        return v;
+    }
+
+    // A leaf's exact factor; a view of it in part is kept for resampling.
+    double leaf_factor(const Vec3& x, const Vec3& n, const Element& e, int index, std::uint64_t key,
+                       SampledViews& partial, std::uint64_t& rays) const {
+        const View v = surface_factor(x, n, e, index, key, rays, e.emits);
+        if (v.rays > 0) {
+            Rgb light{0, 0, 0};
+            for (int c = 0; c < channels_; ++c) light[c] = v.factor * e.radiosity[c];
+            partial.add({e.polygon, v.centre, e.normal, static_cast<std::uint64_t>(index), light,
+                         photometric(light, channels_), v.fraction, v.rays});
+        }
+        return v.product();
     }
 
     double cluster_factor(const Vec3& x, const Vec3& n, const Element& e,
@@ -105,7 +137,8 @@ std::vector<SensorResult> gather_sensors_from_tree(const PreparedScene& scene,
             const Vec3& x = set.points[i];
             Rgb h = luminaire_irradiance_at(scene, visibility, x, set.normal, local);
             if (tree.top() >= 0) {
-                const Rgb g = gather.at(x, set.normal, (s << 40) ^ i, local);
+                const Rgb g =
+                    gather.at(x, set.normal, (s << 40) ^ i, photometric(h, channels), local);
                 for (int c = 0; c < 3; ++c) h[c] += g[c];
             }
             r.illuminance[i] = channels == 1 ? h[0] : luminance(h);

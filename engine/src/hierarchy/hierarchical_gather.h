@@ -19,6 +19,10 @@ struct GatherCriteria {
     std::uint64_t seed = 1;
     int rays_per_point = 4;
     int emitter_rays_per_point = 16;
+    /// Views of leaves seen in part get up to this many rays, until the sampled visibility's
+    /// standard deviation is at most noise_share × the point's illuminance (0: never).
+    int max_rays_per_point = 256;
+    double noise_share = 0;
     bool unoccluded = false;  ///< nothing can block (see nothing_can_occlude): no shadow rays
 };
 

@@ -5,6 +5,8 @@
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
+#include "solution/surface_summary.h"
+
 namespace radiant {
 
 void fill_sensor_statistics(SensorResult& r) {
@@ -30,7 +32,7 @@ SensorResult sensor_result_for(const PreparedSensorSet& set) {
 
 std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Transport& transport,
                                          const std::array<std::vector<double>, 3>& radiosity,
-                                         int channels, std::uint64_t& rays) {
+                                         int channels, double noise_share, std::uint64_t& rays) {
     std::vector<SensorResult> results;
     tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
     const std::size_t n = transport.patches().size();
@@ -42,15 +44,27 @@ std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Trans
             const Vec3& x = set.points[k];
             const std::uint64_t key = (static_cast<std::uint64_t>(s) << 40) ^ (k << 1) ^ 1u;
             Rgb e = transport.luminaire_irradiance_at(x, set.normal, key, local_rays);
+            SampledViews views;
             for (std::size_t j = 0; j < n; ++j) {
-                const double b =
-                    channels == 1 ? radiosity[0][j]
-                                  : std::max({radiosity[0][j], radiosity[1][j], radiosity[2][j]});
-                if (!(b > 0)) continue;
-                const double f = transport.point_to_patch(x, set.normal, j, key, local_rays);
-                for (int c = 0; c < channels; ++c)
-                    e[c] += f * radiosity[static_cast<std::size_t>(c)][j];
+                Rgb b{0, 0, 0};
+                for (int c = 0; c < channels; ++c) b[c] = radiosity[static_cast<std::size_t>(c)][j];
+                if (!(std::max({b[0], b[1], b[2]}) > 0)) continue;
+                const Transport::PointView v =
+                    transport.point_view(x, set.normal, j, key, local_rays);
+                Rgb light{0, 0, 0};
+                for (int c = 0; c < channels; ++c) {
+                    light[c] = v.factor * b[c];
+                    e[c] += light[c] * v.fraction;
+                }
+                if (v.rays > 0) {
+                    const PatchGeometry& p = transport.patches().patch(j);
+                    views.add({p.vertices, p.centroid, p.normal, j, light,
+                               photometric(light, channels), v.fraction, v.rays});
+                }
             }
+            const Rgb change = transport.resample(
+                views, x, set.normal, noise_share * photometric(e, channels), key, local_rays);
+            for (int c = 0; c < channels; ++c) e[c] = std::max(0.0, e[c] + change[c]);
             r.illuminance[k] = channels == 1 ? e[0] : luminance(e);
         });
         fill_sensor_statistics(r);

@@ -10,11 +10,16 @@
 
 namespace radiant {
 
+// Sampled visibility may leave a sensor this share of tolerance × its illuminance as standard
+// deviation (see SampledViews).
+constexpr double kSensorNoiseShare = 0.25;
+
 /// Illuminance (lux; luminance of the RGB irradiance for colour scenes) at every sensor point,
-/// given per-channel patch radiosity. Parallel over points; deterministic.
+/// given per-channel patch radiosity, with sampled visibility's standard deviation held to
+/// `noise_share` × each point's illuminance. Parallel over points; deterministic.
 std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Transport& transport,
                                          const std::array<std::vector<double>, 3>& radiosity,
-                                         int channels, std::uint64_t& rays);
+                                         int channels, double noise_share, std::uint64_t& rays);
 
 /// The result of one sensor set before its values: its name and, for a work plane, its grid.
 SensorResult sensor_result_for(const PreparedSensorSet& set);

@@ -13,6 +13,7 @@
 #include "meshing/patch_mesh.h"
 #include "solution/gouraud.h"
 #include "solution/result_difference.h"
+#include "solution/sensors.h"
 #include "solution/surface_summary.h"
 #include "solver/pipeline.h"
 #include "visibility/occlusion_culling.h"
@@ -162,6 +163,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         GatherCriteria gather;
         gather.irradiance_epsilon =
             coarsening * kGatherIrradianceFraction * options_.tolerance * mean_irradiance;
+        gather.noise_share = coarsening * kSensorNoiseShare * options_.tolerance;
         gather.seed = options_.seed;
         gather.unoccluded = unoccluded;
         return gather_sensors_from_tree(scene, tree, visibility, gather, channels, rays_);

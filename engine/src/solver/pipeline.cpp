@@ -450,7 +450,8 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     // The radiosity is final from here on; the heartbeat shows it while the sensors gather.
     snapshots_.offer(mesh, 1);
     report("sensors", 0.9, outcome.iterations, outcome.error_estimate, outcome.unshot_fraction);
-    result.sensors = gather_sensors(prepared, transport, outcome.radiosity, channels, rays_);
+    result.sensors = gather_sensors(prepared, transport, outcome.radiosity, channels,
+                                    kSensorNoiseShare * options_.tolerance, rays_);
     SurfaceSummary summary = summarise_surfaces(prepared, solved, channels);
     result.surfaces = std::move(summary.surfaces);
     result.stats.emitted_flux_lm = summary.emitted_flux_lm;
