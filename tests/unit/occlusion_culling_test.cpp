@@ -2,7 +2,9 @@
 // reported as a possible blocker, or no shadow ray is cast and light passes through it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "scene/prepared_scene.h"
 #include "scene_builder.h"
@@ -107,6 +109,34 @@ TEST(OcclusionCulling, FloatingBoxBetweenWallsMayBlock) {
     ASSERT_GE(we.east, 0);
     EXPECT_EQ(c.occluder_count(), 6u);  // the block's faces; the room's are on the convex hull
     EXPECT_TRUE(blocked_between(p, c, we));
+}
+
+// Two-sided slats of a blind: the back of the slat beyond the next one faces the other way from
+// its piece, and the next slat, behind that piece's front, still stands between.
+TEST(OcclusionCulling, SlatBehindTheNextOneOfATwoSidedBlindMayBeBlocked) {
+    Scene scene;
+    scene.name = "blind";
+    Material slat = testing::gray("slat", 0.8);
+    slat.two_sided = true;
+    scene.materials = {testing::gray("wall", 0.5), slat};
+    scene.surfaces = {testing::box_surface("room", "wall", {0, 0, 0}, {4, 4, 3}, true)};
+    const double half = 0.025 * std::sqrt(0.5);  // 5 cm slats at 45°, 72 mm apart
+    for (int k = 0; k < 3; ++k) {
+        scene.surfaces.push_back(
+            testing::polygon_surface("slat" + std::to_string(k), "slat",
+                                     testing::rect({1, 2 - half, 1 + 0.072 * k - half}, {2, 0, 0},
+                                                   {0, 2 * half, 2 * half})));
+    }
+    const PreparedScene p = prepare_scene(scene);
+    const OcclusionCulling c(p);
+    const int first = piece_with_normal(p, 1, {0, -std::sqrt(0.5), std::sqrt(0.5)});
+    const int third = piece_with_normal(p, 3, {0, -std::sqrt(0.5), std::sqrt(0.5)});
+    ASSERT_GE(first, 0);
+    ASSERT_GE(third, 0);
+    const Piece& a = p.pieces[static_cast<std::size_t>(first)];
+    const Piece& b = p.pieces[static_cast<std::size_t>(third)];
+    const std::vector<Vec3> back(b.vertices.rbegin(), b.vertices.rend());
+    EXPECT_TRUE(c.maybe_blocked(first, a.vertices, a.normal, third, back, -b.normal));
 }
 
 }  // namespace

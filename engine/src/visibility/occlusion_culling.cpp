@@ -73,6 +73,11 @@ OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_t
     enabled_ = !occluders_.empty() && k * k <= max_tests / occluders_.size();
     if (!enabled_) return;
     pair_candidates_.resize(k * k);
+    // A two-sided piece's back patches face the other way, so its lists may not drop what lies
+    // behind its front (the slat beyond the next one of a blind would be seen through it).
+    auto facing = [&](const Piece& p) {
+        return scene.materials[static_cast<std::size_t>(p.material)].two_sided ? Vec3{} : p.normal;
+    };
     tbb::parallel_for(std::size_t{0}, k, [&](std::size_t a) {
         const Piece& pa = scene.pieces[a];
         for (std::size_t b = 0; b < k; ++b) {
@@ -83,7 +88,7 @@ OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_t
             auto& list = pair_candidates_[a * k + b];
             for (const int q : occluders_) {
                 if (q == static_cast<int>(a) || q == static_cast<int>(b)) continue;
-                if (can_block(q, shaft, pa.vertices[0], pa.normal, pb.vertices[0], pb.normal)) {
+                if (can_block(q, shaft, pa.vertices[0], facing(pa), pb.vertices[0], facing(pb))) {
                     list.push_back(q);
                 }
             }
