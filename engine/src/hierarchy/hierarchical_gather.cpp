@@ -31,7 +31,7 @@ public:
     Rgb at(const Vec3& x, const Vec3& n, std::uint64_t key, double known,
            std::uint64_t& rays) const {
         Rgb h{0, 0, 0};
-        SampledViews partial;
+        SampledViews views;
         std::vector<int> stack{tree_.top()};
         while (!stack.empty()) {
             const int index = stack.back();
@@ -42,7 +42,7 @@ public:
             if (!e.cluster && dot(x - e.polygon[0], e.normal) <= 0) continue;
             double factor = 0;
             if (e.leaf()) {
-                factor = leaf_factor(x, n, e, index, key, partial, rays);
+                factor = leaf_factor(x, n, e, index, key, views, rays);
             } else {
                 const double d = distance(box, Box{x, x});
                 const double bound = d > 0 ? std::min(1.0, e.area_m2 / (kPi * d * d)) : 1.0;
@@ -51,13 +51,13 @@ public:
                     continue;
                 }
                 factor = e.cluster ? cluster_factor(x, n, e, rays)
-                                   : surface_factor(x, n, e, index, key, rays).product();
+                                   : surface_view(x, n, e, index, key, rays).product();
             }
             for (int c = 0; c < channels_; ++c) h[c] += factor * e.radiosity[c];
         }
         const double sigma = criteria_.noise_share * (known + photometric(h, channels_));
-        const Rgb change = partial.resample(visibility_, x, n, sigma, criteria_.max_rays_per_point,
-                                            criteria_.seed, key, rays);
+        const Rgb change = views.resample(visibility_, x, n, sigma, criteria_.max_rays_per_point,
+                                          criteria_.seed, key, rays);
         for (int c = 0; c < channels_; ++c) h[c] = std::max(0.0, h[c] + change[c]);
         return h;
     }
@@ -71,8 +71,8 @@ private:
         double product() const { return factor * fraction; }
     };
 
-    View surface_factor(const Vec3& x, const Vec3& n, const Element& e, int index,
-                        std::uint64_t key, std::uint64_t& rays, bool emitter_rays = false) const {
+    View surface_view(const Vec3& x, const Vec3& n, const Element& e, int index, std::uint64_t key,
+                      std::uint64_t& rays, bool emitter_rays = false) const {
         View v;
         v.factor = std::max(0.0, front_point_to_polygon_factor(x, n, e.polygon, e.normal));
         if (v.factor <= 0 || criteria_.unoccluded) return v;
@@ -84,15 +84,15 @@ private:
         return v;
     }
 
-    // A leaf's exact factor; a view of it in part is kept for resampling.
+    // A leaf's exact factor; its sampled view is kept, to be sampled again if need be.
     double leaf_factor(const Vec3& x, const Vec3& n, const Element& e, int index, std::uint64_t key,
-                       SampledViews& partial, std::uint64_t& rays) const {
-        const View v = surface_factor(x, n, e, index, key, rays, e.emits);
+                       SampledViews& views, std::uint64_t& rays) const {
+        const View v = surface_view(x, n, e, index, key, rays, e.emits);
         if (v.rays > 0) {
             Rgb light{0, 0, 0};
             for (int c = 0; c < channels_; ++c) light[c] = v.factor * e.radiosity[c];
-            partial.add({e.polygon, v.centre, e.normal, static_cast<std::uint64_t>(index), light,
-                         photometric(light, channels_), v.fraction, v.rays});
+            views.add({e.polygon, v.centre, e.normal, static_cast<std::uint64_t>(index), light,
+                       photometric(light, channels_), v.fraction, v.rays});
         }
         return v.product();
     }
