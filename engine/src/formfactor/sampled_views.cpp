@@ -18,20 +18,20 @@ void SampledViews::add(const SampledView& view) {
     if (view.weight > 0 && view.rays > 0) views_.push_back(view);
 }
 
-Rgb SampledViews::resample(const Visibility& visibility, const Vec3& x, const Vec3& n, double sigma,
-                           int max_rays, std::uint64_t seed, std::uint64_t key,
-                           std::uint64_t& rays) const {
-    Rgb change{0, 0, 0};
+void SampledViews::resample(const Visibility& visibility, const Vec3& x, const Vec3& n,
+                            double sigma, int max_rays, std::uint64_t seed, std::uint64_t key,
+                            Rgb& irradiance, std::uint64_t& rays) const {
     double variance = 0;
     for (const SampledView& v : views_) {
         variance += v.weight * v.weight * v.fraction * (1 - v.fraction) / v.rays;
     }
-    if (!(variance > sigma * sigma)) return change;
+    if (!(variance > sigma * sigma)) return;
     // Every view's variance shrinks by the same factor: the sum meets the budget where the caps
     // allow. Which views are sampled again may not depend on their own first samples (keeping
     // those that saw all or nothing biases the sum), only on what they could add at most.
     const double factor = variance / (sigma * sigma);
     const double share = sigma * sigma / static_cast<double>(views_.size());
+    Rgb change{0, 0, 0};
     for (const SampledView& v : views_) {
         if (v.weight * v.weight / (4.0 * v.rays) <= share) continue;
         const double wanted = std::ceil(v.rays * factor);
@@ -42,7 +42,7 @@ Rgb SampledViews::resample(const Visibility& visibility, const Vec3& x, const Ve
             visible_fraction(visibility, x, n, v.polygon, v.centre, v.normal, m, rng, rays);
         for (int c = 0; c < 3; ++c) change[c] += v.light[c] * (fraction - v.fraction);
     }
-    return change;
+    for (int c = 0; c < 3; ++c) irradiance[c] = std::max(0.0, irradiance[c] + change[c]);
 }
 
 }  // namespace radiant

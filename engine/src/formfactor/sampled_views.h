@@ -31,10 +31,11 @@ public:
     /// If the views' sampled shares p have a standard deviation (w²·p(1−p)/m each: stratified
     /// samples do at least this well) over `sigma` lux, samples again every view that could
     /// hold a share of it, with the rays that bring the sum under `sigma` (at most `max_rays`),
-    /// from streams apart from the first samples' (seed, key, stream). Returns the change of
-    /// the point's irradiance per channel.
-    Rgb resample(const Visibility& visibility, const Vec3& x, const Vec3& n, double sigma,
-                 int max_rays, std::uint64_t seed, std::uint64_t key, std::uint64_t& rays) const;
+    /// from streams apart from the first samples' (seed, key, stream), and moves the point's
+    /// `irradiance` (per channel) by what changed.
+    void resample(const Visibility& visibility, const Vec3& x, const Vec3& n, double sigma,
+                  int max_rays, std::uint64_t seed, std::uint64_t key, Rgb& irradiance,
+                  std::uint64_t& rays) const;
 
 private:
     std::vector<SampledView> views_;

@@ -75,10 +75,10 @@ Transport::PointView Transport::point_view(const Vec3& x, const Vec3& n, std::si
     return v;
 }
 
-Rgb Transport::resample(const SampledViews& views, const Vec3& x, const Vec3& n, double sigma,
-                        std::uint64_t key, std::uint64_t& rays) const {
-    return views.resample(visibility_, x, n, sigma, options_.max_rays_per_point, options_.seed, key,
-                          rays);
+void Transport::resample(const SampledViews& views, const Vec3& x, const Vec3& n, double sigma,
+                         std::uint64_t key, Rgb& irradiance, std::uint64_t& rays) const {
+    views.resample(visibility_, x, n, sigma, options_.max_rays_per_point, options_.seed, key,
+                   irradiance, rays);
 }
 
 void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays,

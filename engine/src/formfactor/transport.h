@@ -48,10 +48,10 @@ public:
     PointView point_view(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
                          std::uint64_t& rays) const;
 
-    /// The change of x's irradiance when its views are sampled again to a standard deviation of
-    /// `sigma` lux (see SampledViews); `key` as for its views.
-    Rgb resample(const SampledViews& views, const Vec3& x, const Vec3& n, double sigma,
-                 std::uint64_t key, std::uint64_t& rays) const;
+    /// Samples x's views again to a standard deviation of `sigma` lux and moves its
+    /// `irradiance` by what changed (see SampledViews); `key` as for its views.
+    void resample(const SampledViews& views, const Vec3& x, const Vec3& n, double sigma,
+                  std::uint64_t key, Rgb& irradiance, std::uint64_t& rays) const;
 
     /// Row i of the form-factor matrix (receiver i, all sources) into `row` (size = patches).
     /// `parallel` spreads the sources over the calling arena's threads (for a single row, as

@@ -56,9 +56,8 @@ public:
             for (int c = 0; c < channels_; ++c) h[c] += factor * e.radiosity[c];
         }
         const double sigma = criteria_.noise_share * (known + photometric(h, channels_));
-        const Rgb change = views.resample(visibility_, x, n, sigma, criteria_.max_rays_per_point,
-                                          criteria_.seed, key, rays);
-        for (int c = 0; c < channels_; ++c) h[c] = std::max(0.0, h[c] + change[c]);
+        views.resample(visibility_, x, n, sigma, criteria_.max_rays_per_point, criteria_.seed, key,
+                       h, rays);
         return h;
     }
 

@@ -62,9 +62,8 @@ std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Trans
                                photometric(light, channels), v.fraction, v.rays});
                 }
             }
-            const Rgb change = transport.resample(
-                views, x, set.normal, noise_share * photometric(e, channels), key, local_rays);
-            for (int c = 0; c < channels; ++c) e[c] = std::max(0.0, e[c] + change[c]);
+            transport.resample(views, x, set.normal, noise_share * photometric(e, channels), key, e,
+                               local_rays);
             r.illuminance[k] = channels == 1 ? e[0] : luminance(e);
         });
         fill_sensor_statistics(r);
