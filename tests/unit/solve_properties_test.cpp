@@ -378,7 +378,11 @@ TEST_P(NoNaN, NastyScene) {
     SolveOptions options = options_from(scene.settings);
     options.want_mesh = true;
     const Result r = solve(scene, options);
-    ASSERT_EQ(r.status, SolveStatus::converged) << name << ": " << r.error;
+    ASSERT_NE(r.status, SolveStatus::failed) << name << ": " << r.error;
+    // `converged` only with an estimate within the tolerance (contract §3); a 1 cm² emitter 1 mm
+    // above the floor misses it on the finest mesh tried and is `stopped`.
+    EXPECT_EQ(r.status == SolveStatus::converged, r.stats.error_estimate <= options.tolerance)
+        << name << ": estimate " << r.stats.error_estimate;
     ASSERT_TRUE(r.mesh.has_value()) << name;
     expect_all_finite(r, name);
     if (name == "no_light") {

@@ -70,7 +70,7 @@ private:
     /// tolerance (errors shrink about in proportion) and estimates the finer result's error
     /// from the two solutions. The time limit or a cancel makes it `stopped`; where no finer
     /// mesh can be tried (limits_.max_refinement, the dense patch budget, the memory budget) the
-    /// finest result stays `converged` with its estimate above the tolerance.
+    /// finest result is kept with its estimate above the tolerance; run() makes it `stopped`.
     void refine_to_tolerance(const PreparedSolve& prepared, std::string method, Result& result);
     /// The hierarchical path, or the dense one with its matrix: what the check and refinement
     /// solve again.
