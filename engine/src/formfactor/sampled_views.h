@@ -13,6 +13,15 @@
 
 namespace radiant {
 
+/// A point's view of a source polygon: Lambert's unoccluded factor and the share of it sampled
+/// visible (`rays` 0: not sampled, proven clear or facing away).
+struct PointView {
+    double factor = 0;
+    double fraction = 1;
+    int rays = 0;
+    double product() const { return factor * fraction; }
+};
+
 struct SampledView {
     std::span<const Vec3> polygon;  ///< convex source polygon, alive until resample() returns
     Vec3 centre;

@@ -62,8 +62,8 @@ double Transport::visible_fraction(const Vec3& x, const Vec3& n, std::size_t j, 
                                      rng, rays);
 }
 
-Transport::PointView Transport::point_view(const Vec3& x, const Vec3& n, std::size_t j,
-                                           std::uint64_t key, std::uint64_t& rays) const {
+PointView Transport::point_view(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
+                                std::uint64_t& rays) const {
     const PatchGeometry& src = patches_.patch(j);
     PointView v;
     if (src.hidden) return v;

@@ -38,13 +38,8 @@ public:
               std::vector<char> enclosed);
 
     /// A point x's (unit normal n) view of patch j: the unoccluded fraction of its cosine-weighted
-    /// hemisphere that patch j covers, and the share of it sampled visible (`rays` 0: not
-    /// sampled, proven clear or facing away). `key` seeds the ray samples; counts rays.
-    struct PointView {
-        double factor = 0;
-        double fraction = 1;
-        int rays = 0;
-    };
+    /// hemisphere that patch j covers, and the share of it sampled visible. `key` seeds the ray
+    /// samples; counts rays.
     PointView point_view(const Vec3& x, const Vec3& n, std::size_t j, std::uint64_t key,
                          std::uint64_t& rays) const;
 

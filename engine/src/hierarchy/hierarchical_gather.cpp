@@ -62,12 +62,8 @@ public:
     }
 
 private:
-    struct View {
-        double factor = 0;    ///< Lambert's, unoccluded
-        double fraction = 1;  ///< sampled visible share
-        int rays = 0;
-        Vec3 centre;
-        double product() const { return factor * fraction; }
+    struct View : PointView {
+        Vec3 centre;  ///< of the polygon the rays were aimed at
     };
 
     View surface_view(const Vec3& x, const Vec3& n, const Element& e, int index, std::uint64_t key,

@@ -49,8 +49,7 @@ std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Trans
                 Rgb b{0, 0, 0};
                 for (int c = 0; c < channels; ++c) b[c] = radiosity[static_cast<std::size_t>(c)][j];
                 if (!(std::max({b[0], b[1], b[2]}) > 0)) continue;
-                const Transport::PointView v =
-                    transport.point_view(x, set.normal, j, key, local_rays);
+                const PointView v = transport.point_view(x, set.normal, j, key, local_rays);
                 Rgb light{0, 0, 0};
                 for (int c = 0; c < channels; ++c) {
                     light[c] = v.factor * b[c];

@@ -240,7 +240,8 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     const bool stopped = linked.stopped || linked.budget_reached || !outcome.converged ||
                          !(error_estimate <= options_.tolerance);
     // Errors of the links that the mesh check cannot see; not of the iteration, so they do not
-    // stop the result, but a finer solve can be asked for (refine_to_tolerance).
+    // stop the result here: a finer solve can be asked for (refine_to_tolerance), and only a
+    // result that still misses the tolerance after it is `stopped` (Pipeline::run).
     if (patchwise) {
         Result surfaces;
         surfaces.surfaces = result.surfaces;
