@@ -96,9 +96,11 @@ TEST(Snapshots, HierarchicalSweepsPreviewTheSensors) {
     }
 }
 
-double area_weighted_radiosity(const SolvedMesh& mesh) {
+// Over the triangles of surface `surface`, or of all with −1.
+double area_weighted_radiosity(const SolvedMesh& mesh, int surface = -1) {
     double sum = 0, area = 0;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (surface >= 0 && mesh.triangle_surface[t] != surface) continue;
         const auto& [a, b, c] = mesh.triangles[t];
         const Vec3 pa = mesh.vertices[static_cast<std::size_t>(a)];
         const double at = 0.5 * length(cross(mesh.vertices[static_cast<std::size_t>(b)] - pa,
@@ -134,6 +136,32 @@ TEST(Snapshots, ShootingShowsTheAmbientTerm) {
         }
         EXPECT_GT(checked, 0) << method;
     }
+}
+
+// Links are made lazily: the emitters' first, and while the rest are linked a viewer sees the
+// emitters' light on the refined leaves (with the ambient guess of the reflected light), where
+// the root patches showed the panel alone.
+TEST(Snapshots, HierarchicalShowsTheEmittersLightWhileLinkingTheRest) {
+    const Scene scene = testing::room_with_ceiling_panel(0.5, 1000.0);
+    SolveOptions options = options_from(scene.settings);
+    options.method = "hierarchical";
+    options.snapshot_interval_seconds = 0;
+    options.want_mesh = true;
+    SnapshotRecorder recorder;
+    const Result r = solve(scene, options, &recorder);
+    ASSERT_EQ(r.status, SolveStatus::converged) << r.error;
+    ASSERT_FALSE(recorder.snapshots.empty());
+    const Snapshot& roots = recorder.snapshots.front();
+    EXPECT_EQ(area_weighted_radiosity(*roots.mesh, 0), 0);  // the floor, unlit
+    const auto shot =
+        std::find_if(recorder.snapshots.begin(), recorder.snapshots.end(), [&](const Snapshot& s) {
+            return s.progress.stage == "form factors" && s.mesh_version > roots.mesh_version;
+        });
+    ASSERT_NE(shot, recorder.snapshots.end());
+    EXPECT_GT(shot->mesh->triangles.size(), roots.mesh->triangles.size());
+    EXPECT_LT(shot->mesh_version, recorder.snapshots.back().mesh_version);
+    const double floor = area_weighted_radiosity(*r.mesh, 0);
+    EXPECT_NEAR(area_weighted_radiosity(*shot->mesh, 0), floor, 0.2 * floor);
 }
 
 TEST(Snapshots, KeepComingThroughEveryPhaseOfASolve) {

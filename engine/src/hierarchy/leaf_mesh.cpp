@@ -10,6 +10,14 @@ namespace radiant {
 
 SolvedMesh leaf_mesh(const ElementTree& tree, const PatchMesh& patches, int channels,
                      const Vec3& world_origin) {
+    std::vector<double> radiosity(tree.size(), 0.0);
+    for (std::size_t e = 0; e < tree.size(); ++e)
+        radiosity[e] = photometric(tree[e].radiosity, channels);
+    return leaf_mesh(tree, patches, radiosity, world_origin);
+}
+
+SolvedMesh leaf_mesh(const ElementTree& tree, const PatchMesh& patches,
+                     std::span<const double> radiosity, const Vec3& world_origin) {
     SolvedMesh mesh;
     // Vertices are shared within one plane of one surface side: midpoints of shared edges are
     // computed alike on both sides, so exact coordinates match.
@@ -21,7 +29,7 @@ SolvedMesh leaf_mesh(const ElementTree& tree, const PatchMesh& patches, int chan
         const Element& x = tree[e];
         if (x.cluster || !x.leaf()) continue;
         const PatchGeometry& p = patches.patch(static_cast<std::size_t>(x.patch));
-        const double b = photometric(x.radiosity, channels);
+        const double b = radiosity[e];
         const auto plane =
             std::make_tuple(std::llround(x.normal.x * 1e9), std::llround(x.normal.y * 1e9),
                             std::llround(x.normal.z * 1e9));

@@ -19,10 +19,7 @@
 namespace radiant {
 namespace {
 
-struct Pair {
-    int receiver;
-    int source;
-};
+using Pair = ElementPair;
 
 // A source nearer to a receiver than this fraction of the receiver's diameter is
 // near-singular for the receiver's quadrature points (see Oracle::surface_factor).
@@ -321,6 +318,39 @@ private:
     double eps_;
 };
 
+// Which sources may be linked now (RefinementCriteria::ready_source): a surface element with its
+// patch, a cluster once any patch in it is.
+class SourceReadiness {
+public:
+    SourceReadiness(const ElementTree& tree, std::span<const char> ready_patch)
+        : tree_(tree), ready_patch_(ready_patch) {
+        if (ready_patch_.empty() || tree.top() < 0) return;
+        cluster_.assign(tree.size(), 0);
+        classify(tree.top());
+    }
+
+    bool ready(int e) const {
+        if (ready_patch_.empty()) return true;
+        const Element& x = tree_[static_cast<std::size_t>(e)];
+        return x.cluster ? cluster_[static_cast<std::size_t>(e)] != 0
+                         : ready_patch_[static_cast<std::size_t>(x.patch)] != 0;
+    }
+
+private:
+    bool classify(int e) {
+        const Element& x = tree_[static_cast<std::size_t>(e)];
+        if (!x.cluster) return ready(e);
+        bool any = false;
+        for (const int c : x.children) any = classify(c) || any;
+        cluster_[static_cast<std::size_t>(e)] = any;
+        return any;
+    }
+
+    const ElementTree& tree_;
+    std::span<const char> ready_patch_;
+    std::vector<char> cluster_;  // clusters are made with the tree: none is added later
+};
+
 // Each child's share of a link's factor, from the unoccluded kernel at the receiver's points and
 // extrapolated (kShareExtrapolation), kept where it differs from the child's share of the area by
 // more than the rounding of 255ths.
@@ -371,31 +401,56 @@ void share_sources(std::vector<Link>& links, const ElementTree& tree) {
 RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
                                const RefinementCriteria& criteria) {
     RefinementOutcome out;
-    if (tree.top() < 0) return out;
+    if (tree.top() >= 0) out.deferred.push_back({tree.top(), tree.top()});
+    resume_links(out, tree, visibility, criteria);
+    return out;
+}
+
+void resume_links(RefinementOutcome& out, ElementTree& tree, const Visibility& visibility,
+                  const RefinementCriteria& criteria) {
     const Oracle oracle(tree, visibility, criteria);
-    std::vector<Pair> pending{{tree.top(), tree.top()}};
-    auto add_links = [&out](const Pair& p, const Verdict& v) {
+    const SourceReadiness ready(tree, criteria.ready_source);
+    std::vector<Pair> pending = std::move(out.deferred);
+    out.deferred.clear();
+    std::vector<Link> made;
+    auto add_links = [&made](const Pair& p, const Verdict& v) {
         for (const SourcePart& part : v.parts) {
-            out.links.push_back({p.receiver, part.element, static_cast<float>(part.factor)});
+            made.push_back({p.receiver, part.element, static_cast<float>(part.factor)});
         }
     };
-    for (int round = 0; !pending.empty(); ++round) {
-        if (criteria.on_round) criteria.on_round(round, out.rays, out.links.size());
+    for (; !pending.empty(); ++out.rounds) {
+        if (criteria.on_round)
+            criteria.on_round(out.rounds, out.rays, out.links.size() + made.size());
         if (criteria.should_stop && criteria.should_stop()) {
             out.stopped = true;
             break;
         }
-        // An element's link to itself: a cluster's parts light each other; a plane never does.
+        // Pairs whose sources hold a ready patch are judged (a cluster's link carries the light of
+        // all its parts: it is made when the first of them is ready); the rest wait.
         std::vector<Pair> pairs;
+        auto admit = [&](const Pair& p) {
+            (ready.ready(p.source) ? pairs : out.deferred).push_back(p);
+        };
+        // An element's link to itself: a cluster's parts light each other; a plane never does.
         for (const Pair& p : pending) {
             if (p.receiver != p.source) {
-                pairs.push_back(p);
+                admit(p);
                 continue;
             }
             const Element& e = tree[static_cast<std::size_t>(p.receiver)];
             if (!e.cluster) continue;
+            if (!ready.ready(p.source)) {
+                out.deferred.push_back(p);
+                continue;
+            }
             for (const int a : e.children) {
-                for (const int b : e.children) pairs.push_back({a, b});
+                for (const int b : e.children) {
+                    if (a == b) {
+                        pairs.push_back({a, b});  // opened next round
+                    } else {
+                        admit({a, b});
+                    }
+                }
             }
         }
         std::vector<Verdict> verdicts(pairs.size());
@@ -404,7 +459,7 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
         // the pairs not judged by then are dropped, like those still pending between rounds.
         std::atomic<bool> interrupted{false};
         tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
-            if (pairs[i].receiver == pairs[i].source) return;  // expanded next round
+            if (pairs[i].receiver == pairs[i].source) return;  // opened next round
             if (interrupted.load(std::memory_order_relaxed)) return;
             if (criteria.should_stop && criteria.should_stop()) {
                 interrupted = true;
@@ -430,8 +485,9 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
         const std::size_t first_new = tree.size();
         std::vector<std::size_t> rejudge;  // splits the budget refused: judged again unsplit
         auto over_budget = [&] {
-            const std::size_t held = tree.bytes() + out.links.capacity() * sizeof(Link) +
-                                     pending.capacity() * sizeof(Pair);
+            const std::size_t held = tree.bytes() +
+                                     (out.links.capacity() + made.capacity()) * sizeof(Link) +
+                                     (pending.capacity() + out.deferred.capacity()) * sizeof(Pair);
             if (criteria.max_bytes > 0 && held > criteria.max_bytes) out.budget_reached = true;
             return out.budget_reached;
         };
@@ -481,13 +537,14 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
             tree.estimate_from(first_new, criteria.ambient_irradiance, criteria.channels);
         }
     }
-    std::sort(out.links.begin(), out.links.end(), [](const Link& a, const Link& b) {
-        return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
-    });
     // Samples of one cluster on the same patch make one link.
+    auto by_pair = [](const Link& a, const Link& b) {
+        return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
+    };
+    std::sort(made.begin(), made.end(), by_pair);
     std::vector<Link> merged;
-    merged.reserve(out.links.size());
-    for (const Link& l : out.links) {
+    merged.reserve(made.size());
+    for (const Link& l : made) {
         if (!merged.empty() && merged.back().receiver == l.receiver &&
             merged.back().source == l.source) {
             merged.back().factor += l.factor;
@@ -495,9 +552,12 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
             merged.push_back(l);
         }
     }
-    out.links = std::move(merged);
+    // Earlier stages linked other sources: no pair is linked twice.
+    const auto earlier = static_cast<std::ptrdiff_t>(out.links.size());
+    out.links.insert(out.links.end(), merged.begin(), merged.end());
+    std::inplace_merge(out.links.begin(), out.links.begin() + earlier, out.links.end(), by_pair);
+    // Sources split since their links were made hand on by their children's shares too.
     share_sources(out.links, tree);
-    return out;
 }
 
 }  // namespace radiant

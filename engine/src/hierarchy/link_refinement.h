@@ -5,7 +5,8 @@
 // receiver's points (and partial visibility) times the source's radiosity times the receiver's
 // area, and the spread of the kernel over the source's points times the range of its radiosity
 // times its area, against a fraction of the scene's emitted power, raised where the receiver
-// matters little to the sensors (importance).
+// matters little to the sensors (importance). Links are made lazily, when their sources are
+// about to shoot (see RefinementCriteria::ready_source): pairs whose sources are not ready wait.
 #pragma once
 
 #include <array>
@@ -51,6 +52,12 @@ Rgb handed_radiosity(const Link& link, const ElementTree& tree, const Value& val
     return b;
 }
 
+/// Two elements whose exchange of light is still to be judged: `receiver` from `source`.
+struct ElementPair {
+    int receiver;
+    int source;
+};
+
 struct RefinementCriteria {
     double power_epsilon_lm = 0;  ///< a link may carry at most this much uncertain power
     /// Mean radiosity of all surfaces (first guess): the light a closed receiver's factor-sum
@@ -68,25 +75,36 @@ struct RefinementCriteria {
     /// Per root patch, in (0, 1]: its share of the sensors' importance (see sensor_importance.h);
     /// links into it may carry power_epsilon_lm / weight uncertain. Empty: all 1.
     std::span<const double> receiver_weight;
+    /// Per root patch: whether links from it are made now. A pair whose source holds no ready
+    /// patch waits (RefinementOutcome::deferred); a cluster holding some is opened until each
+    /// source is ready or not. Empty: every patch is ready.
+    std::span<const char> ready_source;
     std::function<bool()> should_stop;  ///< polled between rounds and pairs, from any thread
     /// Told after each round: rounds done, rays cast and links made so far.
     std::function<void(int rounds, std::uint64_t rays, std::size_t links)> on_round;
 };
 
 struct RefinementOutcome {
-    std::vector<Link> links;  ///< sorted by receiver, then source
+    std::vector<Link> links;            ///< sorted by receiver, then source
+    std::vector<ElementPair> deferred;  ///< pairs whose sources were not ready (see resume_links)
+    int rounds = 0;                     ///< rounds of refinement so far
     std::uint64_t rays = 0;
     bool stopped = false;         ///< cancelled or out of time: pairs were left unlinked
     bool budget_reached = false;  ///< elements stopped splitting at the memory budget
 };
 
-/// Links every pair of elements that exchange light. Splits elements of `tree` as it goes
-/// (and lights the new ones); uses `radiosity_max` and `radiosity_min` of the elements as the
-/// source estimate.
+/// Links every pair of elements that exchange light and whose source is ready (see
+/// RefinementCriteria::ready_source). Splits elements of `tree` as it goes (and lights the new
+/// ones); uses `radiosity_max` and `radiosity_min` of the elements as the source estimate.
 /// Once the tree and links would outgrow `max_bytes`, pairs link where they stand instead.
 /// Links from sources that ended up with children get the children's shares (see Link).
 /// Parallel over candidate pairs; deterministic for any thread count.
 RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
                                const RefinementCriteria& criteria);
+
+/// Goes on with `outcome.deferred` as refine_links does, now that `criteria` may have more
+/// sources ready (and the elements new estimates), adding to `outcome.links`.
+void resume_links(RefinementOutcome& outcome, ElementTree& tree, const Visibility& visibility,
+                  const RefinementCriteria& criteria);
 
 }  // namespace radiant

@@ -5,6 +5,7 @@
 
 #include "formfactor/enclosure.h"
 #include "hierarchy/element_tree.h"
+#include "hierarchy/emitter_shot.h"
 #include "hierarchy/hierarchical_gather.h"
 #include "hierarchy/hierarchical_solver.h"
 #include "hierarchy/leaf_mesh.h"
@@ -51,9 +52,11 @@ constexpr double kSnapshotGatherShare = 0.25;
 constexpr double kRefinementMemoryShare = 0.6;
 // Root patches beyond this would not fit the element budget.
 constexpr std::size_t kMaxRootPatches = 2'000'000;
-// Snapshots show the root patches until the links are refined, then the leaves of the hierarchy.
+// Snapshots show the root patches until the links are refined (the leaves lit by the emitters'
+// shot between the two stages of linking), then the leaves of the hierarchy.
 constexpr std::uint64_t kRootMeshVersion = 1;
-constexpr std::uint64_t kLeafMeshVersion = 2;
+constexpr std::uint64_t kEmitterShotMeshVersion = 2;
+constexpr std::uint64_t kLeafMeshVersion = 3;
 
 }  // namespace
 
@@ -143,7 +146,37 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         options_.max_memory_bytes > 0 ? options_.max_memory_bytes : physical_memory_bytes() / 2;
     criteria.max_bytes =
         static_cast<std::size_t>(kRefinementMemoryShare * static_cast<double>(budget));
+    // Links are made lazily, as their sources come to shoot: the emitting patches' first; the
+    // rest once the emitters have sent their light, which a viewer sees meanwhile.
+    std::vector<char> emitting(roots.size(), 0);
+    for (std::size_t e = 0; e < tree.size(); ++e) {
+        const Element& x = tree[e];
+        if (!x.cluster && x.depth == 0 && x.emits) emitting[static_cast<std::size_t>(x.patch)] = 1;
+    }
+    if (std::find(emitting.begin(), emitting.end(), 1) != emitting.end())
+        criteria.ready_source = emitting;
     RefinementOutcome linked = refine_links(tree, visibility, criteria);
+    if (!linked.deferred.empty() && !linked.stopped) {
+        if (observer_) {
+            // With the ambient guess of the reflected light, as the shooting snapshots show it.
+            const std::vector<Rgb> shot = emitter_shot(tree, linked.links);
+            std::vector<double> shown(tree.size(), 0.0);
+            for (std::size_t e = 0; e < tree.size(); ++e) {
+                const Element& x = tree[e];
+                Rgb b;
+                for (std::size_t c = 0; c < 3; ++c) {
+                    b[c] = x.exitance[c] +
+                           x.reflectance[c] * (x.luminaire_irradiance[c] + shot[e][c] + ambient);
+                }
+                shown[e] = photometric(b, channels);
+            }
+            snapshots_.offer(std::make_shared<const SolvedMesh>(
+                                 leaf_mesh(tree, roots, shown, scene.world_origin)),
+                             kEmitterShotMeshVersion);
+        }
+        criteria.ready_source = {};
+        resume_links(linked, tree, visibility, criteria);
+    }
     rays_ = rays_before_links + linked.rays;
     elements_ = tree.leaf_count();
     links_ = linked.links.size();

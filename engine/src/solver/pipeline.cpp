@@ -48,9 +48,9 @@ constexpr double kCheckMargin = 3;
 constexpr double kRefineTarget = 0.7;
 constexpr double kMinRefineRatio = 2;
 constexpr double kMaxRefineRatio = 8;
-// Mesh versions of refined solutions: above those of either path (dense 1, hierarchical 1–2),
+// Mesh versions of refined solutions: above those of either path (dense 1, hierarchical 1–3),
 // so a viewer sees the triangles change.
-constexpr std::uint64_t kFirstRefinedMeshVersion = 3;
+constexpr std::uint64_t kFirstRefinedMeshVersion = 4;
 
 // The error of the finer of two solutions whose tolerances (or, for a dense mesh held to its
 // budget, patch counts) differ by `ratio`: errors shrink about in proportion to the tolerance
