@@ -76,8 +76,8 @@ struct RefinementCriteria {
     /// links into it may carry power_epsilon_lm / weight uncertain. Empty: all 1.
     std::span<const double> receiver_weight;
     /// Per root patch: whether links from it are made now. A pair whose source holds no ready
-    /// patch waits (RefinementOutcome::deferred); a cluster holding some is opened until each
-    /// source is ready or not. Empty: every patch is ready.
+    /// patch waits (RefinementOutcome::deferred); a cluster is judged once any patch in it is
+    /// (its link carries the light of all its parts). Empty: every patch is ready.
     std::span<const char> ready_source;
     std::function<bool()> should_stop;  ///< polled between rounds and pairs, from any thread
     /// Told after each round: rounds done, rays cast and links made so far.
@@ -103,7 +103,7 @@ RefinementOutcome refine_links(ElementTree& tree, const Visibility& visibility,
                                const RefinementCriteria& criteria);
 
 /// Goes on with `outcome.deferred` as refine_links does, now that `criteria` may have more
-/// sources ready (and the elements new estimates), adding to `outcome.links`.
+/// sources ready, adding to `outcome.links` (still sorted, every link's shares made anew).
 void resume_links(RefinementOutcome& outcome, ElementTree& tree, const Visibility& visibility,
                   const RefinementCriteria& criteria);
 
