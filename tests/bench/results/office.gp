@@ -1,5 +1,5 @@
 set terminal pngcairo size 1280,900 noenhanced
-set output 'tests/bench/results/office.png'
+set output 'office.png'
 set logscale xy
 set format xy '%g'
 set grid
@@ -8,42 +8,41 @@ set xlabel 'seconds'
 set ylabel 'RMS relative error'
 set title 'radiant-bench: error against time'
 $d0 << EOD
-1.18107 0.00209022
-1.65024 0.001328
-3.12842 0.000369799
+1.25 0.00207
+1.787 0.00135
+3.38 0.00043
 EOD
 $d1 << EOD
-31.0226 0.00349228
+33.322 0.00347
 EOD
 $d2 << EOD
-10.2698 0.00322382
-14.9056 0.00166312
-39.4741 0.00059031
+4.946 0.000923
+5.898 0.000565
+7.101 0.00065
 EOD
 $d3 << EOD
-250.997 0.00977807
+297.53 0.00352
 EOD
 $d4 << EOD
-4.52534 0.00097238
-5.20426 0.000519858
-6.26712 0.000776331
+11.774 0.00255
+16.402 0.00272
+47.345 0.000447
 EOD
 $d5 << EOD
-298.611 0.00364711
+167.255 0.00873
 EOD
 $d6 << EOD
-61.6877 0.00387932
-79.2362 0.00356388
-321.199 0.0021889
+75.8 0.00286
+101.054 0.00211
 EOD
 $d7 << EOD
-303.562 0.103705
+725.275 0.0484
 EOD
 plot $d0 with linespoints title 'office-x1 hierarchical', \
      $d1 with linespoints title 'office-x1 shooting', \
-     $d2 with linespoints title 'office-x16 hierarchical', \
-     $d3 with linespoints title 'office-x16 shooting', \
-     $d4 with linespoints title 'office-x4 hierarchical', \
-     $d5 with linespoints title 'office-x4 shooting', \
+     $d2 with linespoints title 'office-x4 hierarchical', \
+     $d3 with linespoints title 'office-x4 shooting', \
+     $d4 with linespoints title 'office-x16 hierarchical', \
+     $d5 with linespoints title 'office-x16 shooting', \
      $d6 with linespoints title 'office-x64 hierarchical', \
      $d7 with linespoints title 'office-x64 shooting'
