@@ -19,19 +19,6 @@ std::vector<Rgb> emitter_shot(const ElementTree& tree, const std::vector<Link>& 
         const Rgb& above = received[static_cast<std::size_t>(x.parent)];
         for (int c = 0; c < 3; ++c) received[e][c] += above[c];
     }
-    // Up: an interior element's light is its leaves' area average (children after parents).
-    for (std::size_t e = n; e-- > 0;) {
-        const Element& x = tree[e];
-        if (x.cluster || x.leaf()) continue;
-        Rgb sum{0, 0, 0};
-        double area = 0;
-        for (const int child : x.children) {
-            const auto k = static_cast<std::size_t>(child);
-            for (int c = 0; c < 3; ++c) sum[c] += tree[k].area_m2 * received[k][c];
-            area += tree[k].area_m2;
-        }
-        for (int c = 0; c < 3; ++c) received[e][c] = area > 0 ? sum[c] / area : 0;
-    }
     return received;
 }
 

@@ -10,9 +10,9 @@
 
 namespace radiant {
 
-/// Per element, the irradiance its surface gets from the emission the links hand it and its
-/// ancestors (area average over its leaves; 0 for clusters). Links from sources that do not
-/// emit add nothing.
+/// Per surface element, the irradiance the emission reaches it with through its own links and
+/// its ancestors' (for a leaf, all it gets; 0 for clusters). Links from sources that do not emit
+/// add nothing.
 std::vector<Rgb> emitter_shot(const ElementTree& tree, const std::vector<Link>& links);
 
 }  // namespace radiant

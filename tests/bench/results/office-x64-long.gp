@@ -8,10 +8,10 @@ set xlabel 'seconds'
 set ylabel 'RMS relative error'
 set title 'radiant-bench: error against time'
 $d0 << EOD
-87.2377 0.00286328
+78.6796 0.00286328
 EOD
 $d1 << EOD
-905.313 0.050221
+1504.65 0.0457463
 EOD
 plot $d0 with linespoints title 'office-x64 hierarchical', \
      $d1 with linespoints title 'office-x64 shooting'
