@@ -1,6 +1,7 @@
 // Every scene of the shared validation set against its expected answer (tests/data/scenes,
 // copied from shared/validation so that a clone is self-contained), with default settings —
-// and with `method: hierarchical` forced, since every accuracy bar must hold with it too.
+// and with `method: hierarchical` forced, since every accuracy bar must hold with it too; and
+// whether the estimate bounds the error at a coarse tolerance.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -37,6 +38,20 @@ void expect_matches(const std::string& name, const std::string& method) {
 }
 
 TEST_P(ValidationScene, MatchesExpected) { expect_matches(GetParam(), "auto"); }
+
+// At a coarse tolerance too, where the solvers' errors are far below it (parallel squares:
+// 4e-6 at 0.1) and the two solutions of the mesh check agree closer still.
+TEST_P(ValidationScene, EstimateBoundsTheErrorAtACoarseTolerance) {
+    const std::string name = GetParam();
+    const Scene scene = testing::load_scene(data_path("scenes/" + name + ".json"));
+    SolveOptions options = options_from(scene.settings);
+    options.tolerance = 0.1;
+    const Result result = solve(scene, options);
+    ASSERT_EQ(result.status, SolveStatus::converged) << result.error;
+    EXPECT_GE(result.stats.error_estimate,
+              testing::largest_relative_error(result, expected()[name]))
+        << name;
+}
 
 TEST_P(ValidationScene, MatchesExpectedHierarchical) { expect_matches(GetParam(), "hierarchical"); }
 

@@ -31,11 +31,6 @@ constexpr double kMinEdgeFactor = 0.25;
 constexpr double kLinkPowerFraction = 2.5e-4;
 // A node may add this fraction of tolerance × the mean irradiance to a sensor unopened.
 constexpr double kGatherIrradianceFraction = 0.02;
-// The estimate never claims less than this share of the tolerance: two solutions whose links
-// are each held far under it differ by their quadratures' noise as much as by their
-// convergence, so the mesh check cannot resolve errors below it (parallel squares: errors of
-// 2 % of the tolerance where the check's two solutions agreed to 0.1 % of it).
-constexpr double kUnresolvedShare = 0.05;
 // The patch-wise completion (see HierarchicalSystem::patchwise_completed) is one other answer,
 // not a bracket: the truth lies beyond it as often as between (a unit cube's ceiling at tolerance
 // 0.01: the alternative moved it by 0.34 %, its error was 0.43 %), so the difference counts twice.
@@ -281,7 +276,6 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         error_estimate = std::max(
             error_estimate, kCompletionMargin * largest_relative_difference(surfaces, *patchwise));
     }
-    error_estimate = std::max(error_estimate, kUnresolvedShare * options_.tolerance);
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
                  channels, stopped);
