@@ -1,6 +1,7 @@
 // radiant-bench: speed against error. Runs each solver at several tolerances on a suite of
-// scenes — the validation scenes (exact answers), the RADIANCE room, and a generated furnished
-// office at 1, 4, 16 and 64 times the furniture (against a converged hierarchical reference) —
+// scenes — the validation scenes (exact answers), the RADIANCE room, a generated furnished
+// office at 1, 4, 16 and 64 times the furniture, and any scene file the user names (the last two
+// against a converged hierarchical reference) —
 // each case in its own forked child so its peak memory is its own. Prints a Markdown table and
 // writes it as Markdown and CSV, plots error against time with gnuplot, and summarises the
 // scaling series and the time each method needs to reach a target error.
@@ -48,6 +49,11 @@ std::string furnace_name(double reflectance) {
 }
 
 std::string office_name(int units) { return "office-x" + std::to_string(units); }
+
+// A --scenes item that names a scene file rather than a built-in scene.
+bool is_scene_file(const std::string& item) {
+    return item.find('/') != std::string::npos || fs::path(item).extension() == ".json";
+}
 
 struct BenchScene {
     Scene scene;
@@ -129,7 +135,7 @@ bool usable_reference(const nlohmann::json& solve, double max_seconds) {
             solve.at("estimate").is_number());
 }
 
-// The converged answer of a generated scene: from the cache, or a hierarchical solve at
+// The converged answer of a generated or user's scene: from the cache, or a hierarchical solve at
 // `tolerance` (in a child, so its memory does not inflate the later cases' peaks).
 bool prepare_reference(BenchScene& bench, double tolerance, double max_seconds, int threads,
                        const ReferenceCache& cache) {
@@ -193,8 +199,10 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--scenes", only_scenes,
                    "scenes: names from expected.json, furnace-rho0.99, furnace-rho0.999, "
-                   "room-s2, office-x1 … office-x64, or the groups validation (all exact scenes "
-                   "and room-s2) and scaling (the offices); default: all")
+                   "room-s2, office-x1 … office-x64, the groups validation (all exact scenes "
+                   "and room-s2) and scaling (the offices), or scene files (a path or NAME.json: "
+                   "its first sensor set against a converged hierarchical reference); default: "
+                   "validation and scaling")
         ->delimiter(',');
     app.add_option("--max-seconds", max_seconds, "time cap of each case")->capture_default_str();
     app.add_option("--method-seconds", method_seconds,
@@ -208,7 +216,8 @@ int main(int argc, char** argv) {
     app.add_option("--out", out_stem, "writes STEM.md, STEM.csv, STEM.gp and STEM.png")
         ->capture_default_str();
     app.add_option("--reference-tolerance", reference_tolerance,
-                   "tolerance of the converged hierarchical reference of the offices")
+                   "tolerance of the converged hierarchical reference of the offices and scene "
+                   "files")
         ->capture_default_str();
     app.add_option("--reference-seconds", reference_seconds, "time cap of a reference solve")
         ->capture_default_str();
@@ -272,12 +281,28 @@ int main(int argc, char** argv) {
     for (const int units : kScalingUnits) scaling.push_back(office_name(units));
 
     std::vector<std::string> names;
+    std::map<std::string, Scene> scene_files;  // by the --scenes item that named them
     if (only_scenes.empty()) only_scenes = {"validation", "scaling"};
     for (const auto& s : only_scenes) {
         const auto& group = s == "validation" ? validation
                             : s == "scaling"  ? scaling
                                               : std::vector<std::string>{s};
         for (const auto& n : group) {
+            if (is_scene_file(n)) {
+                if (scene_files.count(n) == 0) {
+                    auto scene = load(n);
+                    if (!scene) return 2;
+                    if (scene->sensors.empty()) {
+                        std::cerr << "radiant-bench: " << n
+                                  << " has no sensors: its errors are measured on its first "
+                                     "sensor set\n";
+                        return 2;
+                    }
+                    scene_files.emplace(n, std::move(*scene));
+                    names.push_back(n);
+                }
+                continue;
+            }
             const bool known =
                 std::find(validation.begin(), validation.end(), n) != validation.end() ||
                 std::find(scaling.begin(), scaling.end(), n) != scaling.end();
@@ -303,7 +328,16 @@ int main(int argc, char** argv) {
     bool all_ok = true;
     for (const auto& name : names) {
         BenchScene bench;
-        if (name == kRadianceRoom) {
+        std::string row_name = name;
+        if (const auto file = scene_files.find(name); file != scene_files.end()) {
+            bench.scene = file->second;
+            if (!bench.scene.name.empty()) row_name = bench.scene.name;
+            bench.reference.sensor = bench.scene.sensors.at(0).name;
+            if (!prepare_reference(bench, reference_tolerance, reference_seconds, threads, cache)) {
+                all_ok = false;
+                continue;
+            }
+        } else if (name == kRadianceRoom) {
             const auto scene = load(data / "radiance" / "room-s2.json");
             if (!scene) return 2;
             bench.scene = *scene;
@@ -344,7 +378,7 @@ int main(int argc, char** argv) {
                     run_isolated([&] { return solve_case(bench.scene, options, bench.reference); },
                                  watchdog_for(seconds));
                 BenchRow row;
-                row.scene = name;
+                row.scene = row_name;
                 row.triangles = triangles;
                 row.method = method;
                 row.tolerance = tol;

@@ -1,10 +1,11 @@
-# Runs radiant-bench on one validation scene and the smallest office (with a coarse reference)
-# with two methods; fails unless it exits 0, prints the table with a row per case, reports the
-# time to error, and writes the Markdown, CSV and (with gnuplot) PNG files.
+# Runs radiant-bench on one validation scene, the smallest office and a scene file (the last two
+# with a coarse reference) with two methods; fails unless it exits 0, prints the table with a row
+# per case, reports the time to error, and writes the Markdown, CSV and (with gnuplot) PNG files.
+# A scene file without sensors must be refused with exit code 2.
 foreach(ext md csv gp png)
   file(REMOVE ${OUT}.${ext})
 endforeach()
-execute_process(COMMAND ${BENCH} --scenes parallel-squares-d1,office-x1
+execute_process(COMMAND ${BENCH} --scenes parallel-squares-d1,office-x1,${DATA}/radiance/room-s2.json
                         --methods direct,hierarchical --tolerance 0.3
                         --reference-tolerance 0.1 --max-seconds 20 --out ${OUT} --cache ${CACHE}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -17,12 +18,17 @@ if(header EQUAL -1)
   message(FATAL_ERROR "the table header was not printed")
 endif()
 foreach(row "| parallel-squares-d1 | 4 | direct | 0.3 |" "| office-x1 | 500 | hierarchical | 0.3 |"
+            "| room-s2 | 20 | hierarchical | 0.3 |"
             "Time to an RMS error of at most 0.02")
   string(FIND "${out}" "${row}" found)
   if(found EQUAL -1)
     message(FATAL_ERROR "missing from the output: ${row}")
   endif()
 endforeach()
+string(FIND "${err}" "reference of room-s2: hierarchical 0.1" found)
+if(found EQUAL -1)
+  message(FATAL_ERROR "the scene file's reference was not computed")
+endif()
 set(files ${OUT}.md ${OUT}.csv)
 if(GNUPLOT)
   list(APPEND files ${OUT}.png)
@@ -32,3 +38,10 @@ foreach(f ${files})
     message(FATAL_ERROR "radiant-bench did not write ${f}")
   endif()
 endforeach()
+
+execute_process(COMMAND ${BENCH} --scenes ${DATA}/scenes/parallel-squares-d1.json --out ${OUT}-refused
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(FIND "${err}" "has no sensors" said)
+if(NOT rc EQUAL 2 OR said EQUAL -1)
+  message(FATAL_ERROR "a scene file without sensors was not refused (${rc}): ${out}${err}")
+endif()
