@@ -1,6 +1,6 @@
 // Properties every solve must have, whatever the scene: solvers agree, results do not depend on
 // placement, units or threads, nothing is NaN, cancellation is prompt, meshes are valid, colour
-// works and bad input fails cleanly.
+// works, `auto` picks the cheaper solver and bad input fails cleanly.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -430,6 +430,22 @@ void expect_finite_partial(const Result& r) {
     }
     EXPECT_TRUE(finite(r.stats.error_estimate));
     EXPECT_TRUE(finite(r.stats.absorbed_flux_lm));
+}
+
+// `auto` solves a few walls densely, unless their dense mesh would be large (a narrow gap makes
+// the patches small) and the tolerance is one the hierarchy meets.
+TEST(AutoMethod, DenseForAFewWallsHierarchicalWhenTheirMeshIsFine) {
+    SolveOptions options;
+    options.tolerance = 0.01;
+    const Result cube =
+        solve(testing::load_scene(testing::data_path("scenes/furnace-rho0.5.json")), options);
+    ASSERT_EQ(cube.status, SolveStatus::converged) << cube.error;
+    EXPECT_NE(cube.stats.method, "hierarchical") << cube.stats.patches << " patches";
+    const Scene slab_furnace =
+        testing::load_scene(testing::data_path("scenes/furnace-rho0.5-slab.json"));
+    const Result slab = solve(slab_furnace, options);
+    ASSERT_EQ(slab.status, SolveStatus::converged) << slab.error;
+    EXPECT_EQ(slab.stats.method, "hierarchical");
 }
 
 TEST(Cancellation, CancelFromFirstProgress) {

@@ -83,6 +83,9 @@ private:
     };
     /// The dense path's mesh at `tolerance`.
     static DenseMeshSize dense_mesh_size(const PreparedSolve& prepared, double tolerance);
+    /// Whether `auto` solves a scene of few polygons hierarchically after all: its dense mesh
+    /// would be `size`, too large, and the asked tolerance is one the hierarchy can meet.
+    bool prefers_hierarchy(const DenseMeshSize& size) const;
     /// Publishes the final mesh (`final_mesh_`) and the result's sensors as the final snapshot,
     /// with the result's error estimate.
     void publish_final(const Result& result);
