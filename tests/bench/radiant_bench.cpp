@@ -57,7 +57,7 @@ bool is_scene_file(const std::string& item) {
 
 struct BenchScene {
     Scene scene;
-    ReferenceAnswer reference;  ///< for generated scenes, from a converged reference solve
+    ReferenceAnswer reference;  ///< for generated scenes and scene files, from a reference solve
 };
 
 // `furnace` (one glowing material on a closed box) with every reflectance `reflectance`.
