@@ -2,7 +2,9 @@
 // exactly or from another method — each within the error the solve itself estimates.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <variant>
 
 #include "montecarlo/element_mesh.h"
 #include "montecarlo/light_sources.h"
@@ -102,6 +104,24 @@ TEST(MonteCarlo, AgreesWithTheDenseSolverWithinBothEstimates) {
     EXPECT_GE(mc.stats.error_estimate, 0.05 * 0.01);
     EXPECT_GT(mc.stats.error_parts.gather_noise, 0);
     EXPECT_GT(mc.stats.error_parts.photon_noise, 0);
+}
+
+TEST(MonteCarlo, AMirrorImageAgreesWithinBothEstimates) {
+    const Scene scene = panel_room_with_sensors();
+    Scene mirrored = scene;  // x → 4 − x; polygons reversed to keep their fronts
+    for (auto& s : mirrored.surfaces) {
+        auto& poly = std::get<Polygon>(s.geometry);
+        for (auto& v : poly) v.x = 4 - v.x;
+        std::reverse(poly.begin(), poly.end());
+    }
+    for (auto& v : mirrored.sensors.at(0).points) v.x = 4 - v.x;
+    const Result a = testing::solve_with(scene, "monte-carlo", 0.01);
+    const Result b = testing::solve_with(mirrored, "monte-carlo", 0.01);
+    ASSERT_EQ(b.status, SolveStatus::converged) << describe(b);
+    const double difference =
+        rms_relative_error(b.sensors.at(0).illuminance, a.sensors.at(0).illuminance);
+    EXPECT_GT(difference, 0);  // other samples
+    EXPECT_LE(difference, a.stats.error_estimate + b.stats.error_estimate);
 }
 
 TEST(MonteCarlo, SameAnswerForAnyNumberOfThreads) {
