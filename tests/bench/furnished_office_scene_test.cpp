@@ -309,5 +309,14 @@ TEST(SceneExport, ReadsBackToTheSameScene) {
     }
 }
 
+TEST(SceneExport, ExampleIsWhatTheGeneratorMakes) {
+    // Regenerate with: radiant-bench --export proto/examples/furnished-office-clutter
+    //                  --scenes furnished-office
+    std::ifstream in(RADIANT_CLUTTER_EXAMPLE);
+    std::ostringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str(), scene_document(office()));
+}
+
 }  // namespace
 }  // namespace radiant::bench
