@@ -1,15 +1,18 @@
 // radiant-bench: speed against error. Runs each solver at several tolerances on a suite of
-// scenes — the validation scenes (exact answers), the RADIANCE room, a generated furnished
-// office at 1, 4, 16 and 64 times the furniture, and any scene file the user names (the last two
-// against a converged hierarchical reference) —
+// scenes — the validation scenes (exact answers), the RADIANCE room, a generated box office at
+// 1, 4, 16 and 64 times the furniture, a cluttered furnished office (with panels or IES
+// downlights) and floors of 4, 16 and 64 such rooms, and any scene file the user names (the
+// generated scenes and scene files against a reference solve, see --reference) —
 // each case in its own forked child so its peak memory is its own. Prints a Markdown table and
 // writes it as Markdown and CSV, plots error against time with gnuplot, and summarises the
-// scaling series and the time each method needs to reach a target error.
+// scaling series and the time each method needs to reach a target error. With --export it
+// writes the named scenes as radiant-scene/1 files instead.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -21,6 +24,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bench_scenes.h"
 #include "bench_table.h"
 #include "isolated_run.h"
 #include "office_scene.h"
@@ -28,6 +32,7 @@
 #include "radiant/solve.h"
 #include "reference_answer.h"
 #include "reference_cache.h"
+#include "scene_export.h"
 
 namespace {
 
@@ -36,7 +41,6 @@ using namespace radiant;
 using namespace radiant::bench;
 
 constexpr const char* kRadianceRoom = "room-s2";
-const std::vector<int> kScalingUnits{1, 4, 16, 64};
 // The validation set's furnace at reflectances near 1, where a factor sum short by δ costs
 // ρδ/(1 − ρ): every surface emits E and reflects ρ, so B = E/(1 − ρ) on all of them, exactly.
 constexpr const char* kFurnace = "furnace-rho0.9";
@@ -48,8 +52,6 @@ std::string furnace_name(double reflectance) {
     return name.str();
 }
 
-std::string office_name(int units) { return "office-x" + std::to_string(units); }
-
 // A --scenes item that names a scene file rather than a built-in scene.
 bool is_scene_file(const std::string& item) {
     return item.find('/') != std::string::npos || fs::path(item).extension() == ".json";
@@ -57,8 +59,15 @@ bool is_scene_file(const std::string& item) {
 
 struct BenchScene {
     Scene scene;
-    ReferenceAnswer reference;  ///< for generated scenes and scene files, from a reference solve
+    ReferenceAnswer reference;     ///< for generated scenes and scene files, from a reference solve
+    bool needs_reference = false;  ///< a generated scene or scene file: see ReferenceSource
 };
+
+// Where the per-point reference of a generated scene or a scene file comes from: fills
+// `bench.reference` (source and illuminance of its sensor set) or says why not on stderr and
+// returns false. Today a converged hierarchical solve, cached; an independent renderer (a
+// RADIANCE peer) plugs in beside it under its own --reference name.
+using ReferenceSource = std::function<bool(BenchScene& bench)>;
 
 // `furnace` (one glowing material on a closed box) with every reflectance `reflectance`.
 BenchScene high_reflectance_furnace(const Scene& furnace, double reflectance) {
@@ -193,16 +202,21 @@ int main(int argc, char** argv) {
     double reference_seconds = 3600;
     double target_error = 0.02;
     int threads = 0;
+    std::string export_dir;
+    std::string reference_name = "hierarchical";
+    std::string downlight = RADIANT_DOWNLIGHT_IES;
     app.add_option("--methods", methods, "solvers to run")->delimiter(',')->capture_default_str();
     app.add_option("--tolerance", tolerances, "tolerances to run (repeat or comma-separate)")
         ->delimiter(',')
         ->capture_default_str();
     app.add_option("--scenes", only_scenes,
                    "scenes: names from expected.json, furnace-rho0.99, furnace-rho0.999, "
-                   "room-s2, office-x1 … office-x64, the groups validation (all exact scenes "
-                   "and room-s2) and scaling (the offices), or scene files (a path or NAME.json: "
-                   "its first sensor set against a converged hierarchical reference); default: "
-                   "validation and scaling")
+                   "room-s2, office-x1 … office-x64, furnished-office, furnished-office-ies, "
+                   "furnished-floor-x4, -x16, -x64, the groups validation (all exact scenes and "
+                   "room-s2), scaling (the box offices), clutter (the two furnished offices) and "
+                   "clutter-scaling (furnished-office and the floors), or scene files (a path or "
+                   "NAME.json: its first sensor set against the reference); default: validation "
+                   "and scaling")
         ->delimiter(',');
     app.add_option("--max-seconds", max_seconds, "time cap of each case")->capture_default_str();
     app.add_option("--method-seconds", method_seconds,
@@ -214,6 +228,10 @@ int main(int argc, char** argv) {
                    "shooting=0.3,shooting=0.1); the others keep --tolerance")
         ->delimiter(',');
     app.add_option("--out", out_stem, "writes STEM.md, STEM.csv, STEM.gp and STEM.png")
+        ->capture_default_str();
+    app.add_option("--reference", reference_name,
+                   "where the references of the generated scenes and scene files come from: "
+                   "hierarchical (a converged solve, cached)")
         ->capture_default_str();
     app.add_option("--reference-tolerance", reference_tolerance,
                    "tolerance of the converged hierarchical reference of the offices and scene "
@@ -227,6 +245,10 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--data", data_dir, "test data directory (tests/data)")->capture_default_str();
     app.add_option("--threads", threads, "worker threads (0: all cores)");
+    app.add_option("--export", export_dir,
+                   "write each of --scenes as DIR/NAME.json (radiant-scene/1) and solve nothing");
+    app.add_option("--downlight", downlight, "IES file of furnished-office-ies")
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
 
     const auto& solvers = solver_names();
@@ -277,16 +299,20 @@ int main(int argc, char** argv) {
     for (auto it = expected.cbegin(); it != expected.cend(); ++it) validation.push_back(it.key());
     for (const double rho : kHighReflectances) validation.push_back(furnace_name(rho));
     validation.push_back(kRadianceRoom);
-    std::vector<std::string> scaling;
-    for (const int units : kScalingUnits) scaling.push_back(office_name(units));
+    const std::vector<std::string>& scaling = office_series();
+    const std::map<std::string, std::vector<std::string>> groups{
+        {"validation", validation},
+        {"scaling", scaling},
+        {"clutter", clutter_scenes()},
+        {"clutter-scaling", clutter_series()}};
 
     std::vector<std::string> names;
     std::map<std::string, Scene> scene_files;  // by the --scenes item that named them
     if (only_scenes.empty()) only_scenes = {"validation", "scaling"};
     for (const auto& s : only_scenes) {
-        const auto& group = s == "validation" ? validation
-                            : s == "scaling"  ? scaling
-                                              : std::vector<std::string>{s};
+        const auto in_group = groups.find(s);
+        const auto& group =
+            in_group != groups.end() ? in_group->second : std::vector<std::string>{s};
         for (const auto& n : group) {
             if (is_scene_file(n)) {
                 if (scene_files.count(n) == 0) {
@@ -305,13 +331,86 @@ int main(int argc, char** argv) {
             }
             const bool known =
                 std::find(validation.begin(), validation.end(), n) != validation.end() ||
-                std::find(scaling.begin(), scaling.end(), n) != scaling.end();
+                is_generated_scene(n);
             if (!known) {
                 std::cerr << "radiant-bench: unknown scene " << n << '\n';
                 return 2;
             }
             if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
         }
+    }
+
+    // The scene and, where it is known beforehand, the answer of a --scenes item; nullopt (with
+    // a message) when a file cannot be read.
+    const auto bench_scene = [&](const std::string& name) -> std::optional<BenchScene> {
+        BenchScene bench;
+        if (const auto file = scene_files.find(name); file != scene_files.end()) {
+            bench.scene = file->second;
+            bench.needs_reference = true;
+        } else if (name == kRadianceRoom) {
+            const auto scene = load(data / "radiance" / "room-s2.json");
+            if (!scene) return std::nullopt;
+            bench.scene = *scene;
+            bench.reference = {"RADIANCE", nullptr, "workplane",
+                               read_radiance_csv(data / "radiance" / "room-s2.reference.csv")};
+        } else if (const auto rho = std::find_if(kHighReflectances.begin(), kHighReflectances.end(),
+                                                 [&](double r) { return furnace_name(r) == name; });
+                   rho != kHighReflectances.end()) {
+            const auto furnace = load(data / "scenes" / (std::string(kFurnace) + ".json"));
+            if (!furnace) return std::nullopt;
+            bench = high_reflectance_furnace(*furnace, *rho);
+        } else if (expected.contains(name)) {
+            const auto scene = load(data / "scenes" / (name + ".json"));
+            if (!scene) return std::nullopt;
+            bench.scene = *scene;
+            bench.reference = {"exact", expected.at(name), "", {}};
+        } else {
+            std::string why;
+            auto scene = generated_scene(name, downlight, why);
+            if (!scene) {
+                std::cerr << "radiant-bench: " << why << '\n';
+                return std::nullopt;
+            }
+            bench.scene = std::move(*scene);
+            bench.needs_reference = true;
+        }
+        if (bench.needs_reference) bench.reference.sensor = bench.scene.sensors.at(0).name;
+        return bench;
+    };
+
+    if (!export_dir.empty()) {
+        std::error_code ec;
+        fs::create_directories(export_dir, ec);
+        for (const auto& name : names) {
+            const auto bench = bench_scene(name);
+            if (!bench) return 2;
+            const std::string stem =
+                bench->scene.name.empty() ? fs::path(name).stem().string() : bench->scene.name;
+            const fs::path file = fs::path(export_dir) / (stem + ".json");
+            std::ofstream out(file);
+            out << scene_document(bench->scene);
+            if (!out.flush()) {
+                std::cerr << "radiant-bench: cannot write " << file << '\n';
+                return 2;
+            }
+            std::size_t points = 0;
+            for (const SensorSet& set : bench->scene.sensors) points += set.points.size();
+            std::cout << file.string() << ": " << input_triangles(bench->scene) << " triangles, "
+                      << points << " sensor points\n";
+        }
+        return 0;
+    }
+
+    const ReferenceCache cache{fs::path(cache_dir)};
+    const std::map<std::string, ReferenceSource> reference_sources{
+        {"hierarchical", [&](BenchScene& bench) {
+             return prepare_reference(bench, reference_tolerance, reference_seconds, threads,
+                                      cache);
+         }}};
+    const auto source = reference_sources.find(reference_name);
+    if (source == reference_sources.end()) {
+        std::cerr << "radiant-bench: unknown reference source " << reference_name << '\n';
+        return 2;
     }
 
     std::ofstream markdown(out_stem + ".md"), csv(out_stem + ".csv");
@@ -323,45 +422,17 @@ int main(int argc, char** argv) {
     print_markdown_header(markdown);
     print_csv_header(csv);
 
-    const ReferenceCache cache{fs::path(cache_dir)};
     std::vector<BenchRow> rows;
     bool all_ok = true;
     for (const auto& name : names) {
-        BenchScene bench;
-        std::string row_name = name;
-        if (const auto file = scene_files.find(name); file != scene_files.end()) {
-            bench.scene = file->second;
-            if (!bench.scene.name.empty()) row_name = bench.scene.name;
-            bench.reference.sensor = bench.scene.sensors.at(0).name;
-            if (!prepare_reference(bench, reference_tolerance, reference_seconds, threads, cache)) {
-                all_ok = false;
-                continue;
-            }
-        } else if (name == kRadianceRoom) {
-            const auto scene = load(data / "radiance" / "room-s2.json");
-            if (!scene) return 2;
-            bench.scene = *scene;
-            bench.reference = {"RADIANCE", nullptr, "workplane",
-                               read_radiance_csv(data / "radiance" / "room-s2.reference.csv")};
-        } else if (const auto rho = std::find_if(kHighReflectances.begin(), kHighReflectances.end(),
-                                                 [&](double r) { return furnace_name(r) == name; });
-                   rho != kHighReflectances.end()) {
-            const auto furnace = load(data / "scenes" / (std::string(kFurnace) + ".json"));
-            if (!furnace) return 2;
-            bench = high_reflectance_furnace(*furnace, *rho);
-        } else if (expected.contains(name)) {
-            const auto scene = load(data / "scenes" / (name + ".json"));
-            if (!scene) return 2;
-            bench.scene = *scene;
-            bench.reference = {"exact", expected.at(name), "", {}};
-        } else {
-            const int units = std::stoi(name.substr(name.find('x') + 1));
-            bench.scene = furnished_office(units);
-            bench.reference.sensor = bench.scene.sensors.at(0).name;
-            if (!prepare_reference(bench, reference_tolerance, reference_seconds, threads, cache)) {
-                all_ok = false;
-                continue;
-            }
+        auto made = bench_scene(name);
+        if (!made) return 2;
+        BenchScene& bench = *made;
+        const std::string row_name =
+            scene_files.count(name) && !bench.scene.name.empty() ? bench.scene.name : name;
+        if (bench.needs_reference && !source->second(bench)) {
+            all_ok = false;
+            continue;
         }
         const std::size_t triangles = input_triangles(bench.scene);
         for (const auto& method : methods) {
@@ -417,11 +488,13 @@ int main(int argc, char** argv) {
 
     std::ostringstream summary;
     print_time_to_error(summary, rows, target_error);
-    std::vector<std::string> series;
-    for (const auto& n : scaling) {
-        if (std::find(names.begin(), names.end(), n) != names.end()) series.push_back(n);
+    for (const auto* scenes : {&scaling, &clutter_series()}) {
+        std::vector<std::string> series;
+        for (const auto& n : *scenes) {
+            if (std::find(names.begin(), names.end(), n) != names.end()) series.push_back(n);
+        }
+        if (series.size() >= 2) print_scaling(summary, rows, series);
     }
-    if (series.size() >= 2) print_scaling(summary, rows, series);
     print_estimate_misses(summary, rows);
     std::cout << summary.str();
     markdown << summary.str();

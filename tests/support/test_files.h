@@ -29,7 +29,8 @@ inline std::vector<std::filesystem::path> json_files(const std::filesystem::path
 }
 
 /// Every scene that must be accepted: tests/data/good, the examples (with the furnished office
-/// and its model and photometric files), the validation scenes and the box rooms.
+/// and its model and photometric files, and the generated cluttered office), the validation
+/// scenes and the box rooms.
 inline std::vector<std::filesystem::path> good_scenes() {
     const std::filesystem::path data = RADIANT_TEST_DATA;
     std::vector<std::filesystem::path> files = json_files(data / "good");
@@ -41,6 +42,8 @@ inline std::vector<std::filesystem::path> good_scenes() {
     files.push_back(data / "radiance/room-s2.json");
     files.push_back(std::filesystem::path(RADIANT_SOURCE_DIR) /
                     "proto/examples/furnished-office/furnished-office.json");
+    files.push_back(std::filesystem::path(RADIANT_SOURCE_DIR) /
+                    "proto/examples/furnished-office-clutter/furnished-office.json");
     return files;
 }
 
