@@ -144,6 +144,13 @@ class Service(unittest.TestCase):
                 if name == "import-obj-file-missing.json":
                     self.assertIsInstance(caught.exception, SceneFileError)  # read by the client
 
+    def test_an_idempotency_key_returns_the_first_submissions_job(self):
+        key = f"python-test-{time.time_ns()}"
+        first = self.client.submit(tiny_room(), idempotency_key=key)
+        again = self.client.submit(tiny_room(), idempotency_key=key)
+        self.assertEqual(again.id, first.id)
+        self.assertEqual(first.wait(timeout=60)["status"], "done")
+
     def test_unknown_job(self):
         with self.assertRaises(NotFoundError) as caught:
             self.client.job("0" * 32).status()
