@@ -28,8 +28,11 @@ def main() -> int:
         print(f"job {job.id}")
 
         def progress(p: dict) -> None:
+            # The error is null until the solver has an estimate.
+            error = p.get("error_estimate")
+            shown = "—" if error is None else f"{error:.1e}"
             print(f"{100 * p['fraction']:5.1f}%  {p.get('stage', ''):<14} "
-                  f"iterations {p['iterations']:<4} error {p['error_estimate']:.1e}  "
+                  f"iterations {p['iterations']:<4} error {shown:>7}  "
                   f"{p['elapsed_seconds']:.1f} s", flush=True)
 
         final = job.wait(progress=progress)

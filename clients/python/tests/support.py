@@ -121,8 +121,9 @@ def tiny_room(settings: Optional[Dict[str, Any]] = None) -> Dict[str, Any]:
 
 
 def slow_room(seconds: float = 20) -> Dict[str, Any]:
-    """The tiny room meshed finely: it runs until cancelled or for ``seconds``."""
-    return tiny_room({"tolerance": 0.001, "max_seconds": seconds})
+    """The tiny room meshed finely and solved hierarchically (the Monte Carlo default would
+    finish it in a second): it runs until cancelled or for ``seconds``."""
+    return tiny_room({"tolerance": 0.001, "max_seconds": seconds, "method": "hierarchical"})
 
 
 def wait_for_status(job: Any, status: str, timeout: float = 20) -> Dict[str, Any]:
