@@ -60,8 +60,9 @@ Fit log_log_slope(const std::vector<std::pair<double, double>>& xy) {
 
 const std::vector<std::string>& table_header() {
     static const std::vector<std::string> header{
-        "scene", "triangles", "method",    "tolerance", "seconds",        "rays",  "elements",
-        "links", "peak MiB",  "rms error", "max error", "error estimate", "status"};
+        "scene",     "triangles",      "method",         "tolerance", "seconds",
+        "rays",      "elements",       "links",          "peak MiB",  "rms error",
+        "max error", "error estimate", "estimate / rms", "status",    "stages (s)"};
     return header;
 }
 
@@ -78,7 +79,9 @@ std::vector<std::string> table_cells(const BenchRow& r) {
             sci(r.rms_error),
             sci(r.max_error),
             sci(r.error_estimate),
-            r.status};
+            fixed(r.error_estimate / r.rms_error, 2),
+            r.status,
+            r.stages};
 }
 
 void print_markdown_header(std::ostream& out) {
@@ -87,7 +90,7 @@ void print_markdown_header(std::ostream& out) {
     for (const auto& h : header) out << ' ' << h << " |";
     out << "\n|";
     for (std::size_t i = 0; i < header.size(); ++i) {
-        const bool text = i == 0 || i == 2 || i + 1 == header.size();
+        const bool text = i == 0 || i == 2 || i + 2 >= header.size();
         out << (text ? " --- |" : " ---: |");
     }
     out << '\n';

@@ -23,6 +23,7 @@ struct BenchRow {
     double rms_error = 0, max_error = 0;  ///< relative, against the scene's reference
     double error_estimate = 0;
     std::string status;
+    std::string stages;  ///< seconds per stage of the solve
 };
 
 const std::vector<std::string>& table_header();

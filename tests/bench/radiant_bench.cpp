@@ -106,6 +106,15 @@ std::optional<Scene> load(const fs::path& file) {
     return outcome.scene;
 }
 
+// "photons 0.24 · gather 0.49 …": seconds per stage, as the table prints them.
+std::string stage_summary(const std::vector<StageStats>& stages) {
+    std::ostringstream out;
+    out.precision(2);
+    for (std::size_t i = 0; i < stages.size(); ++i)
+        out << (i ? " · " : "") << stages[i].name << ' ' << std::fixed << stages[i].seconds;
+    return out.str();
+}
+
 // A solve in a child: the row's fields as JSON (the child's memory and time are its own).
 nlohmann::json solve_case(const Scene& scene, const SolveOptions& options,
                           const ReferenceAnswer& reference) {
@@ -121,6 +130,7 @@ nlohmann::json solve_case(const Scene& scene, const SolveOptions& options,
             {"rms", number(error.rms)},
             {"max", number(error.max)},
             {"estimate", number(result.stats.error_estimate)},
+            {"stages", stage_summary(result.stats.stages)},
             {"sensor", result.sensors.empty() ? nlohmann::json(nullptr)
                                               : nlohmann::json(result.sensors[0].illuminance)}};
 }
@@ -144,16 +154,22 @@ bool usable_reference(const nlohmann::json& solve, double max_seconds) {
             solve.at("estimate").is_number());
 }
 
-// The converged answer of a generated or user's scene: from the cache, or a hierarchical solve at
-// `tolerance` (in a child, so its memory does not inflate the later cases' peaks).
-bool prepare_reference(BenchScene& bench, double tolerance, double max_seconds, int threads,
-                       const ReferenceCache& cache) {
+// Monte Carlo references sample with their own seed, so that their noise is independent of the
+// rows' (seed 1).
+constexpr std::uint64_t kReferenceSeed = 1000003;
+
+// The converged answer of a generated or user's scene: from the cache (one per method), or a
+// solve with `method` at `tolerance` (in a child, so its memory does not inflate the later
+// cases' peaks).
+bool prepare_reference(BenchScene& bench, const std::string& method, double tolerance,
+                       double max_seconds, int threads, const ReferenceCache& cache) {
     auto cached = cache.find(bench.scene, tolerance);
     if (!cached) {
-        std::cerr << "radiant-bench: computing the reference of " << bench.scene.name
-                  << " (hierarchical, tolerance " << tolerance << ")\n";
+        std::cerr << "radiant-bench: computing the reference of " << bench.scene.name << " ("
+                  << method << ", tolerance " << tolerance << ")\n";
         SolveOptions options;
-        options.method = "hierarchical";
+        options.method = method;
+        options.seed = kReferenceSeed;
         options.tolerance = tolerance;
         options.max_seconds = max_seconds;
         options.threads = threads;
@@ -174,7 +190,7 @@ bool prepare_reference(BenchScene& bench, double tolerance, double max_seconds, 
         cache.store(bench.scene, tolerance, *cached);
     }
     std::ostringstream source;
-    source << "hierarchical " << tolerance;
+    source << method << " " << tolerance;
     bench.reference.source = source.str();
     bench.reference.illuminance = std::move(cached->illuminance);
     std::cerr << "radiant-bench: reference of " << bench.scene.name << ": "
@@ -189,8 +205,8 @@ int main(int argc, char** argv) {
     CLI::App app{
         "radiant-bench: every solver at several tolerances against exact or reference "
         "answers"};
-    std::vector<std::string> methods{"direct", "gauss-seidel", "jacobi", "shooting",
-                                     "hierarchical"};
+    std::vector<std::string> methods{"monte-carlo", "direct",   "gauss-seidel",
+                                     "jacobi",      "shooting", "hierarchical"};
     std::vector<double> tolerances{0.1, 0.03, 0.01};
     std::vector<std::string> only_scenes;
     std::string out_stem = "radiant-bench";
@@ -203,7 +219,7 @@ int main(int argc, char** argv) {
     double target_error = 0.02;
     int threads = 0;
     std::string export_dir;
-    std::string reference_name = "hierarchical";
+    std::string reference_name = "monte-carlo";
     std::string downlight = RADIANT_DOWNLIGHT_IES;
     app.add_option("--methods", methods, "solvers to run")->delimiter(',')->capture_default_str();
     app.add_option("--tolerance", tolerances, "tolerances to run (repeat or comma-separate)")
@@ -231,11 +247,11 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--reference", reference_name,
                    "where the references of the generated scenes and scene files come from: "
-                   "hierarchical (a converged solve, cached)")
+                   "monte-carlo or hierarchical (a converged solve of that method, cached; "
+                   "Monte Carlo with a seed of its own)")
         ->capture_default_str();
     app.add_option("--reference-tolerance", reference_tolerance,
-                   "tolerance of the converged hierarchical reference of the offices and scene "
-                   "files")
+                   "tolerance of the converged reference of the offices and scene files")
         ->capture_default_str();
     app.add_option("--reference-seconds", reference_seconds, "time cap of a reference solve")
         ->capture_default_str();
@@ -401,12 +417,13 @@ int main(int argc, char** argv) {
         return 0;
     }
 
-    const ReferenceCache cache{fs::path(cache_dir)};
+    const ReferenceCache cache{fs::path(cache_dir) / reference_name};
+    const auto converged_solve = [&](BenchScene& bench) {
+        return prepare_reference(bench, reference_name, reference_tolerance, reference_seconds,
+                                 threads, cache);
+    };
     const std::map<std::string, ReferenceSource> reference_sources{
-        {"hierarchical", [&](BenchScene& bench) {
-             return prepare_reference(bench, reference_tolerance, reference_seconds, threads,
-                                      cache);
-         }}};
+        {"hierarchical", converged_solve}, {"monte-carlo", converged_solve}};
     const auto source = reference_sources.find(reference_name);
     if (source == reference_sources.end()) {
         std::cerr << "radiant-bench: unknown reference source " << reference_name << '\n';
@@ -464,6 +481,7 @@ int main(int argc, char** argv) {
                     row.rms_error = number_or_nan(v.at("rms"));
                     row.max_error = number_or_nan(v.at("max"));
                     row.error_estimate = number_or_nan(v.at("estimate"));
+                    row.stages = v.at("stages");
                     if (row.status == "failed") {
                         std::cerr << name << " / " << method << ": "
                                   << v.at("error").get<std::string>() << '\n';

@@ -1,31 +1,32 @@
 # Runs radiant-bench on one validation scene, the smallest office and a scene file (the last two
-# with a coarse reference) with two methods; fails unless it exits 0, prints the table with a row
+# with a coarse reference) with three methods; fails unless it exits 0, prints the table with a row
 # per case, reports the time to error, and writes the Markdown, CSV and (with gnuplot) PNG files.
 # A scene file without sensors must be refused with exit code 2.
 foreach(ext md csv gp png)
   file(REMOVE ${OUT}.${ext})
 endforeach()
 execute_process(COMMAND ${BENCH} --scenes parallel-squares-d1,office-x1,${DATA}/radiance/room-s2.json
-                        --methods direct,hierarchical --tolerance 0.3
+                        --methods direct,hierarchical,monte-carlo --tolerance 0.3
                         --reference-tolerance 0.1 --max-seconds 20 --out ${OUT} --cache ${CACHE}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "radiant-bench exited with ${rc}")
 endif()
-string(FIND "${out}" "| scene | triangles | method | tolerance | seconds | rays | elements | links | peak MiB | rms error | max error | error estimate | status |" header)
+string(FIND "${out}" "| scene | triangles | method | tolerance | seconds | rays | elements | links | peak MiB | rms error | max error | error estimate | estimate / rms | status | stages (s) |" header)
 if(header EQUAL -1)
   message(FATAL_ERROR "the table header was not printed")
 endif()
 foreach(row "| parallel-squares-d1 | 4 | direct | 0.3 |" "| office-x1 | 500 | hierarchical | 0.3 |"
-            "| room-s2 | 20 | hierarchical | 0.3 |"
+            "| room-s2 | 20 | hierarchical | 0.3 |" "| room-s2 | 20 | monte-carlo | 0.3 |"
+            "photons"
             "Time to an RMS error of at most 0.02")
   string(FIND "${out}" "${row}" found)
   if(found EQUAL -1)
     message(FATAL_ERROR "missing from the output: ${row}")
   endif()
 endforeach()
-string(FIND "${err}" "reference of room-s2: hierarchical 0.1" found)
+string(FIND "${err}" "reference of room-s2: monte-carlo 0.1" found)
 if(found EQUAL -1)
   message(FATAL_ERROR "the scene file's reference was not computed")
 endif()

@@ -32,8 +32,9 @@ public:
     /// Direct irradiance (lux, per channel) at x with unit normal n: every luminaire exactly,
     /// with one shadow ray each; every emitting piece by its exact unoccluded factor times the
     /// visibility of one point drawn on it, which never exceeds the unoccluded light (no
-    /// outliers next to a panel). With many sources a power-weighted subset is drawn. Counts
-    /// rays into `rays`.
+    /// outliers next to a panel). With many sources (a floor of rooms) a subset is drawn by
+    /// what each would send to x unoccluded, roughly, mixed with their power so that none that
+    /// could light x is never drawn. Counts rays into `rays`.
     Rgb direct_at(const Vec3& x, const Vec3& n, const Visibility& visibility, SampleStream& rng,
                   std::uint64_t& rays) const;
 
@@ -47,12 +48,16 @@ private:
         int piece = 0;
         Rgb exitance{0, 0, 0};
         std::vector<double> fan_cdf;  ///< cumulative area of the fan triangles, last = area
+        Vec3 centroid;
+        double power = 0;  ///< photometric lm
     };
     /// A direction table for a photometric luminaire: cells of 1° in γ and 5° in C.
     struct DirectionTable {
         std::vector<double> cdf;  ///< cumulative intensity × solid angle over the cells
     };
 
+    /// Roughly what source `s` sends to x unoccluded (photometric), for drawing sources.
+    double rough_light(std::size_t s, const Vec3& x, const Vec3& n) const;
     Vec3 point_on(const EmittingPiece& e, double r1, double r2, double r3) const;
     Vec3 luminaire_direction(std::size_t luminaire, SampleStream& rng, double& weight) const;
     Rgb luminaire_part(std::size_t luminaire, const Vec3& x, const Vec3& n,

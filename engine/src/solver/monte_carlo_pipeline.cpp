@@ -21,10 +21,12 @@ namespace {
 // over about a free path, and the gather reads it at the coarser level too, to measure the
 // discretisation.
 constexpr double kEdgeOfFreePath = 0.25;
-// The first round: a few photons per element side (at least enough that every batch has a
-// few thousand), and ray sets enough for their spread to mean something.
-constexpr std::size_t kMinInitialPhotons = 1 << 16;
-constexpr std::size_t kInitialPhotonsPerSide = 2;
+// The first round: a few photons per element side at tolerance 0.01, fewer at looser ones (noise
+// falls as 1/√photons), at least one chunk per batch; and ray sets enough for their spread to
+// mean something.
+constexpr std::size_t kMinInitialPhotons = PhotonField::kBatches * PhotonField::kChunkPhotons;
+constexpr double kInitialPhotonsPerSide = 2;
+constexpr double kInitialTolerance = 0.01;
 constexpr int kInitialSets = 8;
 // Rounds aim this far under the tolerance, so that the next estimate, itself noisy, meets it.
 constexpr double kTargetShare = 0.8;
@@ -142,9 +144,11 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         meshing.seconds += seconds_since(stage_start);
         meshing.memory_bytes =
             level->mesh.size() * sizeof(Element) + level->mesh.sides().size() * sizeof(ElementSide);
-        budget.photons = std::max(
-            budget.photons,
-            std::max(kMinInitialPhotons, kInitialPhotonsPerSide * level->mesh.sides().size()));
+        const double share = std::min(1.0, std::pow(kInitialTolerance / options_.tolerance, 2));
+        budget.photons =
+            std::max({budget.photons, kMinInitialPhotons,
+                      static_cast<std::size_t>(kInitialPhotonsPerSide * share *
+                                               static_cast<double>(level->mesh.sides().size()))});
         PhotonField& field = level->field;
         SensorGather& gather = level->gather;
         bool refine = false;
@@ -178,11 +182,13 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 mesh_version,
                 std::make_shared<const std::vector<SensorResult>>(sensor_results(scene, points)));
             report("estimate", 0.9, rounds + 1, reported);
-            if (reported <= options_.tolerance) break;
-            if (should_stop() || gather.sets() == 0) {
+            // A round cut short by a cancel or the time limit has not earned `converged`.
+            const bool complete = field.photons() >= budget.photons && gather.sets() >= budget.sets;
+            if (!complete || should_stop()) {
                 stopped = true;
                 break;
             }
+            if (reported <= options_.tolerance) break;
             // Bias does not fall with samples: a finer mesh does.
             if (!(error.parts.discretisation < kTargetShare * options_.tolerance)) {
                 refine = refinements < kMaxRefinements;

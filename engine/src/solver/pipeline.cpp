@@ -285,15 +285,16 @@ Result Pipeline::run() {
     }
     const std::size_t polygons = prepared.scene.pieces.size();
     std::string method = options_.method;
-    // Scenes with sensors: photons and a final gather cost little per polygon and measure their
-    // own error where it is asked for (the RADIANCE room: 0.14 s against the dense path's 7.7 s
-    // at 0.01); without sensors the radiosity methods' surface-wise estimate is the one that
-    // means something.
+    // Rooms with furniture and sensors: photons and a final gather cost little per polygon and
+    // measure their own error where it is asked for (the sensors); without sensors the
+    // radiosity methods' surface-wise estimate is the one that means something. A handful of
+    // walls stays dense: its surfaces are exact there, and the photons' surface averages carry
+    // noise that no estimate covers (docs/monte-carlo.md).
     const bool has_sensors =
         std::any_of(prepared.scene.sensors.begin(), prepared.scene.sensors.end(),
                     [](const PreparedSensorSet& s) { return !s.points.empty(); });
-    if (method == "auto" && has_sensors) method = "monte-carlo";
-    if (method == "auto" && polygons > kMaxAutoDensePolygons) method = "hierarchical";
+    if (method == "auto" && polygons > kMaxAutoDensePolygons)
+        method = has_sensors ? "monte-carlo" : "hierarchical";
     // Beyond the dense limit only shooting can do without the matrix, and it does so as soon as
     // the mesh cannot fit the matrix's patch budget.
     const bool matrix_free = method == "shooting" && polygons > limits_.max_dense_shooting_polygons;
