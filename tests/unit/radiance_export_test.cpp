@@ -38,7 +38,7 @@ double table_intensity(double gamma_deg, double c_deg) {
     return 100 + 50 * std::cos(g) + 20 * std::sin(g) * std::cos(c);
 }
 
-// In centimetres: a one-sided RGB floor, a two-sided emitting panel of exitance 179π lm/m²
+// In centimetres: a one-sided RGB floor, a two-sided reflecting panel of exitance 179π lm/m²
 // (RADIANCE radiance 1), a room box, and one luminaire of each distribution.
 nlohmann::json small_scene() {
     using nlohmann::json;
@@ -57,7 +57,7 @@ nlohmann::json small_scene() {
         {"materials",
          {{"floor", {{"reflectance", {0.2, 0.4, 0.6}}}},
           {"panel",
-           {{"reflectance", 0.0}, {"two_sided", true}, {"emission", {{"exitance", 179 * kPi}}}}},
+           {{"reflectance", 0.5}, {"two_sided", true}, {"emission", {{"exitance", 179 * kPi}}}}},
           {"wall", {{"reflectance", 0.5}}}}},
         {"surfaces",
          {{{"name", "floor"}, {"material", "floor"}, {"polygon", square(1, true)}},
@@ -135,9 +135,10 @@ TEST(RadianceExport, WritesMaterialsPolygonsLightsAndPoints) {
     ASSERT_TRUE(outcome.ok) << outcome.error;
     const auto& s = outcome.summary;
     EXPECT_EQ(s.channels, 3);
-    EXPECT_EQ(s.polygons, 8u);  // floor, panel, the box's six faces
-    // black; floor and wall: plastic + mixfunc; panel: light; luminaires: 1 + 1 + 2 (pattern)
-    EXPECT_EQ(s.materials, 10u);
+    EXPECT_EQ(s.polygons, 10u);  // floor, panel (light, layer, back), the box's six faces
+    // black; floor: plastic + mixfunc; wall: plastic; panel: light, plastic, mixfunc, back;
+    // luminaires: 1 + 1 + 2 (pattern)
+    EXPECT_EQ(s.materials, 12u);
     EXPECT_EQ(s.light_sources, 4u);
     const std::string rad = test::read_text(dir / "scene.rad");
 
@@ -147,11 +148,22 @@ TEST(RadianceExport, WritesMaterialsPolygonsLightsAndPoints) {
     EXPECT_NE(rad.find("void mixfunc m0_floor\n4 m0_floor_front radiant_black if(Rdot,1,0) ."),
               std::string::npos);
     EXPECT_NE(rad.find("void plastic radiant_black\n0\n0\n5 0 0 0 0 0\n"), std::string::npos);
+    // The box faces in and everything is inside: no ray meets a back, so plain plastic.
+    EXPECT_NE(rad.find("void plastic m2_wall\n0\n0\n5 0.5 0.5 0.5 0 0\n"), std::string::npos);
 
-    // Exitance 179π lm/m² is radiance 1 in RADIANCE's unit, on each channel.
+    // Exitance 179π lm/m² is radiance 1 in RADIANCE's unit, on each channel; the light behind
+    // the reflecting layer (c = (1 + 0.5)/2) has 1/(1 − c) = 4, the layer's plastic ρ/c.
     const auto panel = light_radiance(rad, "m1_panel");
     ASSERT_EQ(panel.size(), 3u);
-    for (const double v : panel) EXPECT_NEAR(v, 1.0, 1e-9);
+    for (const double v : panel) EXPECT_NEAR(v, 4.0, 1e-9);
+    EXPECT_NE(rad.find("void plastic m1_panel_reflects\n0\n0\n5 0.6666666667"), std::string::npos);
+    EXPECT_NE(rad.find("void mixfunc m1_panel_layer\n4 m1_panel_reflects void 0.75 .\n"),
+              std::string::npos);
+    // The layer 10 µm in front of the downward-facing panel at 2.5 m.
+    const auto layer = rad.find("m1_panel_layer polygon s1_panel.0.layer\n0\n0\n12\n");
+    ASSERT_NE(layer, std::string::npos);
+    EXPECT_EQ(rad.substr(rad.find('\n', layer + 50) - 8, 8), " 2.49999");
+    EXPECT_NE(rad.find("m1_panel_back polygon s1_panel.0.back\n"), std::string::npos);
 
     // Point luminaires: intensity / (π r² · 179) for the sphere, I0 / (π r² · 179) for the disk.
     const double projected = kPi * 0.01 * 0.01 * radiance::kLumensPerWatt;
@@ -188,8 +200,11 @@ TEST(RadianceExport, WritesMaterialsPolygonsLightsAndPoints) {
     EXPECT_EQ(s.sensors[1].first, 2u);
     EXPECT_EQ(s.points, 3u);
 
-    EXPECT_NE(test::read_text(dir / "README").find("rtrace -I -h -ab 8 -aa 0 -ad 2048"),
-              std::string::npos);
+    // The reflecting panel needs every shadow ray tested.
+    EXPECT_TRUE(s.needs_all_shadow_tests);
+    EXPECT_NE(
+        test::read_text(dir / "README").find("rtrace -I -h -ab 8 -aa 0 -ad 2048 -lw 1e-4 -dt 0"),
+        std::string::npos);
 }
 
 TEST(RadianceExport, PhotometricDataFileHasGammaRowsAndCColumns) {

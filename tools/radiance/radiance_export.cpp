@@ -38,8 +38,6 @@ std::string identifier(const std::string& prefix, std::size_t index, const std::
 std::string triple(const Rgb& c) { return num(c[0]) + " " + num(c[1]) + " " + num(c[2]); }
 std::string triple(const Vec3& v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
 
-bool any_positive(const Rgb& c) { return c[0] > 0 || c[1] > 0 || c[2] > 0; }
-
 // The photometric frame of a luminaire from -D, the direction of emission towards the point
 // being lit (RADIANCE evaluates a light's pattern on the shadow ray, aimed at the source). γ
 // and C as Radiant's luminaire_light.cpp computes them: γ from the nadir `aim`, C from the C0
@@ -52,15 +50,63 @@ constexpr const char* kLuminaireCal =
     "radiant_c = mod(180/PI * atan2(-(Dx*arg(7) + Dy*arg(8) + Dz*arg(9)),\n"
     "                               -(Dx*arg(4) + Dy*arg(5) + Dz*arg(6))) + 360, 360);\n";
 
+// Offset (m) of the layer that gives a reflecting emitter its reflection: in front of the light
+// by more than RADIANCE's self-intersection tolerance (1e-6) and well behind the point 0.1 mm
+// in front of a surface where rtrace -I measures.
+constexpr double kLayerOffsetM = 1e-5;
+
+// What the pieces of one Radiant material are made of in RADIANCE.
+struct MaterialIds {
+    std::string surface;  ///< the piece itself
+    std::string layer;    ///< reflecting emitters: the mixing layer just in front of the light
+    std::string back;     ///< two-sided reflecting emitters: the reflector just behind it
+};
+
 struct Writer {
     const PreparedScene& scene;
     const ExportOptions& options;
     std::ostringstream rad;
     ExportSummary summary;
-    std::vector<std::string> material_id;  // what a piece of each Radiant material uses
+    std::vector<MaterialIds> material_ids;
+    std::vector<bool> back_in_view;  // per material
     bool black_written = false;
 
     Vec3 world(const Vec3& local) const { return local + scene.world_origin; }
+
+    // Whether a ray can meet the back of some piece of each one-sided material: only when a ray
+    // can start behind its plane, i.e. some piece's vertex or some sensor point lies behind it
+    // (convex pieces lie where their vertices do; luminaires only receive shadow rays). Where no
+    // back is in view, plain plastic (RADIANCE's own two-sided modelling, and its shadow cache)
+    // is exact. Scenes too large to check all pairs are assumed to have backs in view.
+    std::vector<bool> backs_in_view() const {
+        std::vector<bool> seen(scene.materials.size(), false);
+        std::vector<Vec3> origins;
+        for (const Piece& p : scene.pieces) {
+            origins.insert(origins.end(), p.vertices.begin(), p.vertices.end());
+        }
+        for (const PreparedSensorSet& set : scene.sensors) {
+            for (const Vec3& x : set.points) origins.push_back(x + set.normal * 1.1e-4);
+        }
+        const double tolerance = 1e-6 * scene.diagonal_m;
+        const double budget = 2e8;
+        double work = 0;
+        for (const Piece& p : scene.pieces) {
+            const auto m = static_cast<std::size_t>(p.material);
+            if (seen[m] || scene.materials[m].two_sided || scene.materials[m].emits()) continue;
+            work += static_cast<double>(origins.size());
+            if (work > budget) {
+                seen[m] = true;
+                continue;
+            }
+            for (const Vec3& q : origins) {
+                if (dot(q - p.vertices[0], p.normal) < -tolerance) {
+                    seen[m] = true;
+                    break;
+                }
+            }
+        }
+        return seen;
+    }
 
     void write_black() {
         if (black_written) return;
@@ -71,11 +117,11 @@ struct Writer {
     }
 
     // A reflector: plastic with the reflectance per channel, no specular part. RADIANCE's
-    // surfaces reflect on both sides; a one-sided one mixes to black where Rdot < 0 (the ray
-    // meets its back), which also keeps it opaque there, as Radiant's back sides are.
-    std::string write_reflector(std::size_t i, const PreparedMaterial& m) {
-        const std::string id = identifier("m", i, m.name);
-        if (m.two_sided) {
+    // surfaces reflect on both sides; a one-sided one whose back is in view mixes to black
+    // where Rdot < 0 (the ray meets its back), which keeps it opaque there, as Radiant's backs
+    // are. (A mixture is no reliable blocker for rtrace's shadow cache: about 20 % slower.)
+    std::string write_reflector(const std::string& id, const PreparedMaterial& m, bool black_back) {
+        if (!black_back) {
             rad << "void plastic " << id << "\n0\n0\n5 " << triple(m.reflectance) << " 0 0\n\n";
             ++summary.materials;
             return id;
@@ -89,33 +135,62 @@ struct Writer {
     }
 
     // An emitter: Lambertian exitance M (lm/m²) from its front, so radiance M/π (cd/m²), in
-    // RADIANCE's unit M/(π·179). `light` is black to every ray but the shadow rays of the
-    // direct calculation (and from behind); `illum` hands all other rays to the reflector.
-    std::string write_emitter(std::size_t i, const PreparedMaterial& m) {
-        const Rgb radiance{m.exitance_lm_m2[0] / (kPi * kLumensPerWatt),
-                           m.exitance_lm_m2[1] / (kPi * kLumensPerWatt),
-                           m.exitance_lm_m2[2] / (kPi * kLumensPerWatt)};
+    // RADIANCE's unit M/(π·179). A `light` is a source for the direct calculation and black to
+    // every other ray (and from behind). RADIANCE has no source that also reflects (an illum's
+    // alternate material is hidden from ambient rays), so a reflecting emitter gets a layer just
+    // in front of its light: a mixture, coefficient c, of plastic ρ/c and void. Every ray meets
+    // c·(plastic ρ/c) — the reflection ρ·E — and passes with weight 1 − c on to the light, whose
+    // radiance is raised to L/(1 − c); shadow rays see only the light (plastic blocks them), so
+    // they get L. c = (1 + ρmax)/2 keeps ρ/c < 1. A two-sided one also reflects from behind.
+    MaterialIds write_emitter(std::size_t i, const PreparedMaterial& m) {
         const std::string id = identifier("m", i, m.name);
-        if (!any_positive(m.reflectance)) {
-            rad << "void light " << id << "\n0\n0\n3 " << triple(radiance) << "\n\n";
-            ++summary.materials;
-            return id;
+        const double rho = std::max({m.reflectance[0], m.reflectance[1], m.reflectance[2]});
+        const double c = rho > 0 ? (1 + rho) / 2 : 0;
+        Rgb radiance{};
+        for (int k = 0; k < 3; ++k) {
+            radiance[k] = m.exitance_lm_m2[k] / (kPi * kLumensPerWatt) / (1 - c);
         }
-        PreparedMaterial reflector = m;
-        reflector.name += "_reflects";
-        const std::string alt = write_reflector(i, reflector);
-        rad << "void illum " << id << "\n1 " << alt << "\n0\n3 " << triple(radiance) << "\n\n";
+        rad << "void light " << id << "\n0\n0\n3 " << triple(radiance) << "\n";
         ++summary.materials;
-        return id;
+        if (!(rho > 0)) {
+            rad << '\n';
+            return {id, "", ""};
+        }
+        summary.needs_all_shadow_tests = true;
+        const Rgb raised{m.reflectance[0] / c, m.reflectance[1] / c, m.reflectance[2] / c};
+        rad << "void plastic " << id << "_reflects\n0\n0\n5 " << triple(raised) << " 0 0\n"
+            << "void mixfunc " << id << "_layer\n4 " << id << "_reflects void " << num(c)
+            << " .\n0\n0\n";
+        summary.materials += 2;
+        MaterialIds ids{id, id + "_layer", ""};
+        if (m.two_sided) {
+            rad << "void plastic " << id << "_back\n0\n0\n5 " << triple(m.reflectance) << " 0 0\n";
+            ++summary.materials;
+            ids.back = id + "_back";
+        }
+        rad << '\n';
+        return ids;
     }
 
     void write_materials() {
+        back_in_view = backs_in_view();
         rad << "# materials (Radiant reflectance per channel; emitters radiance = exitance / "
                "(pi * 179))\n";
         for (std::size_t i = 0; i < scene.materials.size(); ++i) {
             const PreparedMaterial& m = scene.materials[i];
-            material_id.push_back(m.emits() ? write_emitter(i, m) : write_reflector(i, m));
+            material_ids.push_back(
+                m.emits() ? write_emitter(i, m)
+                          : MaterialIds{write_reflector(identifier("m", i, m.name), m,
+                                                        !m.two_sided && back_in_view[i]),
+                                        "", ""});
         }
+    }
+
+    void write_polygon(const std::string& material, const std::string& id,
+                       const std::vector<Vec3>& vertices, const Vec3& shift) {
+        rad << material << " polygon " << id << "\n0\n0\n" << 3 * vertices.size() << '\n';
+        for (const Vec3& v : vertices) rad << "  " << triple(world(v + shift)) << '\n';
+        ++summary.polygons;
     }
 
     void write_polygons() {
@@ -123,13 +198,17 @@ struct Writer {
         std::vector<std::size_t> piece_of_surface(scene.surface_names.size(), 0);
         for (const Piece& p : scene.pieces) {
             const auto s = static_cast<std::size_t>(p.surface);
+            const MaterialIds& ids = material_ids[static_cast<std::size_t>(p.material)];
             const std::string id = identifier("s", s, scene.surface_names[s]) + "." +
                                    std::to_string(piece_of_surface[s]++);
-            rad << material_id[static_cast<std::size_t>(p.material)] << " polygon " << id
-                << "\n0\n0\n"
-                << 3 * p.vertices.size() << '\n';
-            for (const Vec3& v : p.vertices) rad << "  " << triple(world(v)) << '\n';
-            ++summary.polygons;
+            write_polygon(ids.surface, id, p.vertices, {});
+            if (!ids.layer.empty()) {
+                write_polygon(ids.layer, id + ".layer", p.vertices, p.normal * kLayerOffsetM);
+            }
+            if (!ids.back.empty()) {
+                write_polygon(ids.back, id + ".back", {p.vertices.rbegin(), p.vertices.rend()},
+                              p.normal * -kLayerOffsetM);
+            }
             if (scene.materials[static_cast<std::size_t>(p.material)].emits()) {
                 ++summary.light_sources;
             }
@@ -294,7 +373,8 @@ struct Writer {
           << "emitter radiance = exitance / (pi * 179), luminaire intensity = cd / 179.\n"
           << "Channels: " << summary.channels
           << (summary.channels == 1 ? " (gray scene: R = G = B)\n" : " (RGB, as Radiant's)\n")
-          << "One-sided materials are black on their back (mixfunc on Rdot).\n\n"
+          << "One-sided materials whose back is in view are black there (mixfunc on Rdot);\n"
+          << "reflecting emitters are a light behind a thin plastic/void mixture (scene.rad).\n\n"
           << "Files: scene.rad (" << summary.polygons << " polygons, " << summary.light_sources
           << " light sources), points.txt (" << summary.points << " points: x y z nx ny nz):\n";
         for (const PointRange& s : summary.sensors) {
@@ -308,11 +388,17 @@ struct Writer {
         r << "\nRADIANCE's lib (rayinit.cal) must be on RAYPATH; run in this directory:\n\n"
           << "  export RAYPATH=.:/work/radiance/lib\n"
           << "  oconv scene.rad > scene.oct\n"
-          << "  rtrace -I -h -ab 8 -aa 0 -ad 2048 -lw 1e-4 -n 2 scene.oct < points.txt "
-             "> irradiance.txt\n"
+          << "  rtrace -I -h -ab 8 -aa 0 -ad 2048 -lw 1e-4"
+          << (summary.needs_all_shadow_tests ? " -dt 0" : "")
+          << " -n 2 scene.oct < points.txt > irradiance.txt\n"
           << "  rcalc -e '$1=179*(0.2126*$1+0.7152*$2+0.0722*$3)' irradiance.txt > lux.txt\n\n"
           << "lux.txt has one illuminance (lux) per point. The weights are Radiant's (Rec. 709),\n"
           << "not rtrace's own 0.265/0.670/0.065: Radiant's channels are RADIANCE's one for one.\n";
+        if (summary.needs_all_shadow_tests) {
+            r << "\nThis scene has emitters that also reflect: keep -dt 0 (every shadow ray "
+                 "tested),\n"
+              << "or rtrace adds the untested ones at 1/(1 - c) times their light.\n";
+        }
         return r.str();
     }
 };
@@ -334,7 +420,7 @@ ExportOutcome write_radiance_scene(const Scene& scene, const fs::path& dir,
         return outcome;
     }
     const PreparedScene prepared = prepare_scene(scene);
-    Writer w{prepared, options, {}, {}, {}, false};
+    Writer w{prepared, options, {}, {}, {}, {}, false};
     w.summary.channels = prepared.channels;
     w.rad << "# radiant-to-radiance: the Radiant scene \"" << prepared.name
           << "\" in metres, world frame\n\n";

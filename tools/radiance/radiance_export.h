@@ -52,7 +52,11 @@ struct ExportSummary {
     int channels = 1;           ///< 1 for gray scenes, 3 for RGB (as Radiant solves them)
     std::size_t materials = 0;  ///< RADIANCE materials written (modifiers, patterns excluded)
     std::size_t polygons = 0;
-    std::size_t light_sources = 0;  ///< light/illum polygons plus point luminaires
+    std::size_t light_sources = 0;  ///< emitting polygons plus point luminaires
+    /// Emitters that also reflect are a light behind a partly transparent reflecting layer.
+    /// rtrace must then test every shadow ray (-dt 0): it adds the sources it does not test at
+    /// their unoccluded value, which for these lights is 1/(1 − c) too bright.
+    bool needs_all_shadow_tests = false;
     std::vector<PointRange> sensors;
     std::size_t points = 0;  ///< lines of points.txt
     std::vector<SurfaceSamples> surfaces;
