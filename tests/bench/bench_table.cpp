@@ -25,9 +25,10 @@ std::string sci(double v) {
     return buf;
 }
 
+// A peer's runs ("done") have no convergence of their own: each is one setting's answer.
 bool usable(const BenchRow& r) {
-    return (r.status == "converged" || r.status == "stopped") && std::isfinite(r.rms_error) &&
-           r.seconds > 0;
+    return (r.status == "converged" || r.status == "stopped" || r.status == "done") &&
+           std::isfinite(r.rms_error) && r.seconds > 0;
 }
 
 struct Fit {

@@ -22,8 +22,9 @@ struct BenchRow {
     double peak_mib = 0;
     double rms_error = 0, max_error = 0;  ///< relative, against the scene's reference
     double error_estimate = 0;
-    std::string status;
-    std::string stages;  ///< seconds per stage of the solve
+    std::string status;   ///< converged, stopped, failed, crashed; a peer's runs: done
+    std::string setting;  ///< a peer's command-line settings (empty for Radiant's rows)
+    std::string stages;   ///< seconds per stage of the solve
 };
 
 const std::vector<std::string>& table_header();

@@ -6,7 +6,9 @@
 // each case in its own forked child so its peak memory is its own. Prints a Markdown table and
 // writes it as Markdown and CSV, plots error against time with gnuplot, and summarises the
 // scaling series and the time each method needs to reach a target error. With --export it
-// writes the named scenes as radiant-scene/1 files instead.
+// writes the named scenes as radiant-scene/1 files instead. With --peer radiance, RADIANCE
+// traces each scene over a ladder of settings for comparison (radiance_peer.h);
+// --radiance-reference makes a RADIANCE reference for a scene file.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -19,6 +21,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -28,6 +31,7 @@
 #include "bench_table.h"
 #include "isolated_run.h"
 #include "office_scene.h"
+#include "radiance_peer.h"
 #include "radiant/proto/scene_json.h"
 #include "radiant/solve.h"
 #include "reference_answer.h"
@@ -221,6 +225,11 @@ int main(int argc, char** argv) {
     std::string export_dir;
     std::string reference_name = "monte-carlo";
     std::string downlight = RADIANT_DOWNLIGHT_IES;
+    std::string peer;
+    std::vector<std::string> radiance_settings;
+    std::vector<double> equal_error_targets{0.01, 0.0025};
+    std::string radiance_reference;
+    RadianceReferenceOptions reference_options;
     app.add_option("--methods", methods, "solvers to run")->delimiter(',')->capture_default_str();
     app.add_option("--tolerance", tolerances, "tolerances to run (repeat or comma-separate)")
         ->delimiter(',')
@@ -260,12 +269,55 @@ int main(int argc, char** argv) {
     app.add_option("--target-error", target_error, "RMS error for the time-to-error summary")
         ->capture_default_str();
     app.add_option("--data", data_dir, "test data directory (tests/data)")->capture_default_str();
-    app.add_option("--threads", threads, "worker threads (0: all cores)");
-    app.add_option("--export", export_dir,
+    app.add_option("--threads", threads, "worker threads (0: all cores); also rtrace's -n");
+        app.add_option("--export", export_dir,
                    "write each of --scenes as DIR/NAME.json (radiant-scene/1) and solve nothing");
     app.add_option("--downlight", downlight, "IES file of furnished-office-ies")
         ->capture_default_str();
+    app.add_option("--peer", peer,
+                   "also run a peer on every scene: radiance (rtrace -I over a ladder of "
+                   "settings; skipped with a note when oconv and rtrace are not on PATH)")
+        ->check(CLI::IsMember({"radiance"}));
+    app.add_option("--radiance-settings", radiance_settings,
+                   "the peer's rtrace settings, one run each (repeat or comma-separate); default: "
+                   "the ladder of docs/radiance-peer.md")
+        ->delimiter(',');
+    app.add_option("--equal-error", equal_error_targets,
+                   "RMS errors at which the peer's and Radiant's times are compared")
+        ->delimiter(',')
+        ->capture_default_str();
+    app.add_option("--radiance-reference", radiance_reference,
+                   "instead of benchmarking: average --radiance-runs independent RADIANCE runs at "
+                   "this scene file's first sensor set and write them to --out (CSV)");
+    app.add_option("--radiance-runs", reference_options.runs, "runs of --radiance-reference")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    app.add_option("--radiance-reference-settings", reference_options.setting,
+                   "rtrace settings of each --radiance-reference run")
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
+    const int peer_threads =
+        threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+
+    if (!radiance_reference.empty()) {
+        const auto scene = load(radiance_reference);
+        if (!scene) return 2;
+        const auto bin = radiance_for_peer(std::cerr);
+        if (!bin) return 1;
+        const std::string csv =
+            fs::path(out_stem).extension() == ".csv" ? out_stem : out_stem + ".csv";
+        reference_options.threads = peer_threads;
+        reference_options.work_dir = fs::path(csv).replace_extension("").string() + "-radiance";
+        return write_radiance_reference(*bin, *scene, csv, reference_options, std::cout, std::cerr)
+                   ? 0
+                   : 1;
+    }
+    std::optional<fs::path> radiance_bin;
+    if (peer == "radiance") radiance_bin = radiance_for_peer(std::cout);
+    PeerOptions peer_options;
+    peer_options.threads = peer_threads;
+    peer_options.work_dir = out_stem + "-radiance";
+    if (!radiance_settings.empty()) peer_options.ladder = radiance_settings;
 
     const auto& solvers = solver_names();
     auto known_method = [&](const std::string& m) {
@@ -502,6 +554,17 @@ int main(int argc, char** argv) {
                 if (row.status == "failed") break;
             }
         }
+        if (radiance_bin) {
+            for (const BenchRow& row :
+                 run_radiance_peer(*radiance_bin, bench.scene, bench.reference, row_name, triangles,
+                                   peer_options, std::cerr)) {
+                print_markdown_row(std::cout, row);
+                std::cout << std::flush;
+                print_markdown_row(markdown, row);
+                print_csv_row(csv, row);
+                rows.push_back(row);
+            }
+        }
     }
 
     std::ostringstream summary;
@@ -514,6 +577,10 @@ int main(int argc, char** argv) {
         if (series.size() >= 2) print_scaling(summary, rows, series);
     }
     print_estimate_misses(summary, rows);
+    if (radiance_bin) {
+        print_peer_table(summary, rows);
+        print_equal_error_speed(summary, rows, equal_error_targets);
+    }
     std::cout << summary.str();
     markdown << summary.str();
     plot_error_against_time(rows, out_stem, std::cerr);

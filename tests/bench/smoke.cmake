@@ -1,7 +1,9 @@
 # Runs radiant-bench on one validation scene, the smallest office and a scene file (the last two
 # with a coarse reference) with three methods; fails unless it exits 0, prints the table with a row
 # per case, reports the time to error, and writes the Markdown, CSV and (with gnuplot) PNG files.
-# A scene file without sensors must be refused with exit code 2.
+# A scene file without sensors must be refused with exit code 2. With --peer radiance the bench
+# either notes that RADIANCE is not on PATH or adds the peer's table and the speed at equal
+# error; --radiance-reference either fails with that note or writes a reference CSV.
 foreach(ext md csv gp png)
   file(REMOVE ${OUT}.${ext})
 endforeach()
@@ -45,4 +47,42 @@ execute_process(COMMAND ${BENCH} --scenes ${DATA}/scenes/parallel-squares-d1.jso
 string(FIND "${err}" "has no sensors" said)
 if(NOT rc EQUAL 2 OR said EQUAL -1)
   message(FATAL_ERROR "a scene file without sensors was not refused (${rc}): ${out}${err}")
+endif()
+
+execute_process(COMMAND ${BENCH} --scenes parallel-squares-d1,room-s2 --methods direct
+                        --tolerance 0.3 --max-seconds 20 --peer radiance
+                        --radiance-settings "-ab 1 -aa 0 -ad 32" --out ${OUT}-peer
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "radiant-bench --peer radiance exited with ${rc}")
+endif()
+string(FIND "${out}" "RADIANCE (oconv and rtrace) is not on PATH" missing)
+if(missing EQUAL -1)
+  foreach(row "| room-s2 | -ab 1 -aa 0 -ad 32 |" "| parallel-squares-d1 | -ab 1 -aa 0 -ad 32 |"
+              "| room-s2 | 20 | radiance |" "Speed at equal error")
+    string(FIND "${out}" "${row}" found)
+    if(found EQUAL -1)
+      message(FATAL_ERROR "missing from the peer's output: ${row}")
+    endif()
+  endforeach()
+endif()
+
+file(REMOVE ${OUT}-reference.csv)
+execute_process(COMMAND ${BENCH} --radiance-reference ${DATA}/radiance/room-s2.json
+                        --radiance-runs 2 --radiance-reference-settings "-ab 1 -aa 0 -ad 32"
+                        --out ${OUT}-reference.csv
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(missing EQUAL -1)
+  file(STRINGS ${OUT}-reference.csv lines)
+  list(LENGTH lines n)
+  string(FIND "${out}" "standard error of the mean" noise)
+  if(NOT rc EQUAL 0 OR NOT n EQUAL 82 OR noise EQUAL -1)
+    message(FATAL_ERROR "no RADIANCE reference (${rc}, ${n} lines): ${out}${err}")
+  endif()
+else()
+  string(FIND "${err}" "not on PATH" said)
+  if(NOT rc EQUAL 1 OR said EQUAL -1)
+    message(FATAL_ERROR "--radiance-reference without RADIANCE: ${rc}: ${out}${err}")
+  endif()
 endif()
