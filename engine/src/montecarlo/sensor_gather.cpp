@@ -140,7 +140,8 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
                                      : mesh_[static_cast<std::size_t>(
                                                  sides[static_cast<std::size_t>(twin)].element)]
                                            .area_m2;
-                const double wa = a / (a + b), wb = b / (a + b);
+                // Never 0/0, even for a sliver whose area rounds to nothing.
+                const double wa = a + b > 0 ? a / (a + b) : 1.0, wb = 1 - wa;
                 coarse += twin < 0 ? reflected[static_cast<std::size_t>(side)]
                                    : wa * reflected[static_cast<std::size_t>(side)] +
                                          wb * reflected[static_cast<std::size_t>(twin)];
