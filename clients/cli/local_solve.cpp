@@ -87,6 +87,7 @@ void add_solve_flags(CLI::App& command, SolveFlags& flags) {
         ->check(CLI::PositiveNumber);
     command.add_option("--threads", flags.threads, "worker threads, 0 for all cores")
         ->check(CLI::NonNegativeNumber);
+    command.add_option("--seed", flags.seed, "sampling seed (results repeat for a seed)");
     command.add_option("--method", flags.method, "solver")->check(CLI::IsMember(solver_names()));
     command
         .add_option("--max-memory-mb", flags.max_memory_mb,
@@ -111,6 +112,7 @@ Result solve_locally(const Scene& scene, const SolveFlags& flags, bool want_mesh
     if (flags.max_seconds) options.max_seconds = *flags.max_seconds;
     if (flags.threads) options.threads = *flags.threads;
     if (flags.method) options.method = *flags.method;
+    if (flags.seed) options.seed = *flags.seed;
     if (flags.max_memory_mb) {
         options.max_memory_bytes = static_cast<std::size_t>(*flags.max_memory_mb * 1024 * 1024);
     }

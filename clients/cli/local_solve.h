@@ -2,6 +2,7 @@
 // file, apply the command-line overrides, solve with a progress line on a terminal.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -17,13 +18,14 @@ struct SolveFlags {
     std::optional<double> tolerance;
     std::optional<double> max_seconds;
     std::optional<int> threads;
+    std::optional<std::uint64_t> seed;
     std::optional<std::string> method;
     std::optional<double> max_memory_mb;
     bool progress = false;  ///< print every snapshot as a line on stderr
 };
 
-/// Registers --tolerance, --max-seconds, --threads, --method, --max-memory-mb and --progress on
-/// a subcommand.
+/// Registers --tolerance, --max-seconds, --threads, --seed, --method, --max-memory-mb and
+/// --progress on a subcommand.
 void add_solve_flags(CLI::App& command, SolveFlags& flags);
 
 /// Loads and checks `scene_file`; on problems prints them (`FILE: /pointer: message`) and gives

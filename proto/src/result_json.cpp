@@ -7,7 +7,19 @@
 namespace radiant::proto {
 namespace {
 
+nlohmann::json stages_json(const std::vector<StageStats>& stages) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const StageStats& st : stages) {
+        out.push_back({{"name", st.name},
+                       {"seconds", st.seconds},
+                       {"rays", st.rays},
+                       {"memory_bytes", st.memory_bytes}});
+    }
+    return out;
+}
+
 nlohmann::json stats_json(const SolveStats& s) {
+    const ErrorParts& e = s.error_parts;
     return {{"method", s.method},
             {"patches", s.patches},
             {"elements", s.elements},
@@ -20,7 +32,14 @@ nlohmann::json stats_json(const SolveStats& s) {
             {"emitted_flux_lm", s.emitted_flux_lm},
             {"absorbed_flux_lm", s.absorbed_flux_lm},
             {"channels", s.channels},
-            {"threads", s.threads}};
+            {"threads", s.threads},
+            {"error_parts",
+             {{"residual", e.residual},
+              {"discretisation", e.discretisation},
+              {"gather_noise", e.gather_noise},
+              {"photon_noise", e.photon_noise},
+              {"completion", e.completion}}},
+            {"stages", stages_json(s.stages)}};
 }
 
 /// Element by element: converting whole integer vectors trips GCC's -Wnull-dereference inside

@@ -118,8 +118,11 @@ INSTANTIATE_TEST_SUITE_P(Methods, SolverAgreement,
 // (b) ---------------------------------------------------------------------------------------------
 
 // A fixed seed and a moderate tolerance (the same patches for both scenes of a pair).
+// The dense solver: its surfaces are compared to 1e-3, which a deterministic method meets on any
+// mirror image (the Monte Carlo method's sampling differs there; see monte_carlo_test).
 SolveOptions invariance_options() {
     SolveOptions options;
+    options.method = "direct";
     options.tolerance = 0.02;
     options.seed = 7;
     return options;

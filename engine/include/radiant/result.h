@@ -14,6 +14,24 @@ namespace radiant {
 
 enum class SolveStatus { converged, stopped, failed };
 
+/// Where a solve's time went: one named stage (prepare, meshing, photons, gather, …).
+struct StageStats {
+    std::string name;
+    double seconds = 0;
+    std::uint64_t rays = 0;
+    std::size_t memory_bytes = 0;  ///< what the stage's own data held at its end
+};
+
+/// The error estimate's parts, each relative like the estimate; the estimate combines them.
+/// A method fills those it has and leaves the others 0.
+struct ErrorParts {
+    double residual = 0;        ///< the linear system's algebraic residual bound
+    double discretisation = 0;  ///< mesh and links (a coarser level's answer against this one)
+    double gather_noise = 0;    ///< the sensors' sampled rays and visibility
+    double photon_noise = 0;    ///< the Monte Carlo light field's noise
+    double completion = 0;      ///< light the links did not carry, restored by completion
+};
+
 /// Statistics every solver reports, so methods can be compared on the same scene.
 struct SolveStats {
     std::string method;
@@ -24,13 +42,16 @@ struct SolveStats {
     std::uint64_t rays = 0;      ///< visibility rays cast, form factors and sensors together
     double seconds = 0;
     double unshot_fraction = 0;  ///< unshot power / emitted power (0 for non-shooting solvers)
-    /// Sound bound on the relative, area-weighted L1 error of the radiosity solution with respect
-    /// to the discrete system: ‖r‖/(1−q) / Σ A·B, r the residual, q the norm of diag(ρ)F.
+    /// Relative error the answer is estimated not to exceed: for the Monte Carlo method the
+    /// sensors' RMS error relative to their mean (worst sensor set); for the radiosity methods a
+    /// bound on the area-weighted L1 error, ‖r‖/(1−q) / Σ A·B, plus the mesh check's estimate.
     double error_estimate = 0;
     double emitted_flux_lm = 0;   ///< from emitting surfaces and luminaires
     double absorbed_flux_lm = 0;  ///< Σ A (1−ρ) H over all surface sides
     int channels = 1;             ///< 1 for gray scenes, 3 for RGB
     int threads = 1;
+    ErrorParts error_parts;
+    std::vector<StageStats> stages;
 };
 
 struct SensorResult {

@@ -53,13 +53,24 @@ private:
     /// factors computed when it shoots.
     Result run_dense(const PreparedSolve& prepared, const std::string& method, bool matrix_free);
     Result run_hierarchical(const PreparedSolve& prepared);
+    /// Photons for the reflected light, a final gather at the sensors, rounds of more samples
+    /// until the estimate from their spread meets the tolerance (monte_carlo_pipeline.cpp).
+    Result run_monte_carlo(const PreparedSolve& prepared);
 
     void report(const std::string& stage, double fraction, std::size_t iterations = 0,
                 double error = 0, double unshot = 0) const;
     bool should_stop() const {
         return (cancel_ && cancel_->cancelled()) || (deadline_ && Clock::now() >= *deadline_);
     }
-    double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+    double elapsed() const { return seconds_since(start_); }
+    static double seconds_since(Clock::time_point t) {
+        return std::chrono::duration<double>(Clock::now() - t).count();
+    }
+    /// Adds a stage that began at `begin` and ends now to the result's stage statistics.
+    void record_stage(const std::string& name, Clock::time_point begin, std::uint64_t rays,
+                      std::size_t memory_bytes) {
+        stages_.push_back({name, seconds_since(begin), rays, memory_bytes});
+    }
     /// Adds the discretisation error to a converged result's estimate: Richardson's estimate
     /// from the same method at a coarser tolerance (see pipeline.cpp). The status stays: it says
     /// whether the solver met its tolerance on its mesh; a check that could not finish (time
@@ -86,6 +97,9 @@ private:
     /// Whether `auto` solves a scene of few polygons hierarchically after all: its dense mesh
     /// would be `size`, too large, and the asked tolerance is one the hierarchy can meet.
     bool prefers_hierarchy(const DenseMeshSize& size) const;
+    /// The steps every finished result takes: the estimate's floor, `stopped` for a result that
+    /// misses its tolerance, the stage statistics, the final snapshot and progress.
+    void finish(Result& solved);
     /// Publishes the final mesh (`final_mesh_`) and the result's sensors as the final snapshot,
     /// with the result's error estimate.
     void publish_final(const Result& result);
@@ -105,6 +119,7 @@ private:
     Clock::time_point start_;
     std::optional<Clock::time_point> deadline_;
     std::uint64_t rays_ = 0;
+    std::vector<StageStats> stages_;
     mutable Progress last_progress_;
     /// Mutable like last_progress_: report() is const and hands it every progress.
     mutable SnapshotPublisher snapshots_;

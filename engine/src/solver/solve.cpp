@@ -71,7 +71,7 @@ SolveOptions options_from(const Settings& settings) {
 }
 
 const std::vector<std::string>& solver_names() {
-    static const std::vector<std::string> names{"auto",   "hierarchical", "direct",
+    static const std::vector<std::string> names{"auto",   "monte-carlo",  "hierarchical", "direct",
                                                 "jacobi", "gauss-seidel", "shooting"};
     return names;
 }

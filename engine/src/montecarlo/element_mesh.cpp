@@ -1,0 +1,76 @@
+#include "montecarlo/element_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radiant {
+namespace {
+
+struct Splitter {
+    double max_edge_squared;
+    std::vector<Element>& out;
+
+    // Bisects `t` across its longest edge until every edge is at most the target. Returns the
+    // element's index when `t` needed no split, else −1.
+    int split(const Triangle& t, const Element& proto) {
+        const double ab = length_squared(t.b - t.a), bc = length_squared(t.c - t.b),
+                     ca = length_squared(t.a - t.c);
+        const double longest = std::max({ab, bc, ca});
+        if (longest <= max_edge_squared) {
+            Element e = proto;
+            e.triangle = t;
+            e.area_m2 = 0.5 * length(cross(t.b - t.a, t.c - t.a));
+            out.push_back(e);
+            return static_cast<int>(out.size()) - 1;
+        }
+        // Rotate so that a→b is the longest edge; its midpoint m cuts t into (a, m, c), (m, b, c).
+        Triangle r = t;
+        if (longest == bc) r = {t.b, t.c, t.a};
+        if (longest == ca && longest != bc) r = {t.c, t.a, t.b};
+        const Vec3 m = 0.5 * (r.a + r.b);
+        const int first = split({r.a, m, r.c}, proto);
+        const int second = split({m, r.b, r.c}, proto);
+        if (first >= 0 && second >= 0) {
+            out[static_cast<std::size_t>(first)].sibling = second;
+            out[static_cast<std::size_t>(second)].sibling = first;
+        }
+        return -1;
+    }
+};
+
+}  // namespace
+
+ElementMesh::ElementMesh(const PreparedScene& scene, double max_edge_m) {
+    const double h = std::max(max_edge_m, 1e-9);
+    Splitter splitter{h * h, elements_};
+    for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
+        const Piece& piece = scene.pieces[i];
+        Element proto;
+        proto.normal = piece.normal;
+        proto.piece = static_cast<int>(i);
+        proto.surface = piece.surface;
+        proto.material = piece.material;
+        // Convex pieces: a fan from the first vertex.
+        for (std::size_t k = 1; k + 1 < piece.vertices.size(); ++k) {
+            splitter.split({piece.vertices[0], piece.vertices[k], piece.vertices[k + 1]}, proto);
+        }
+    }
+    for (std::size_t i = 0; i < elements_.size(); ++i) {
+        Element& e = elements_[i];
+        e.front = static_cast<int>(sides_.size());
+        sides_.push_back({static_cast<int>(i), false});
+        if (scene.materials[static_cast<std::size_t>(e.material)].two_sided) {
+            e.back = static_cast<int>(sides_.size());
+            sides_.push_back({static_cast<int>(i), true});
+        }
+    }
+}
+
+std::vector<Triangle> ElementMesh::triangles() const {
+    std::vector<Triangle> out;
+    out.reserve(elements_.size());
+    for (const Element& e : elements_) out.push_back(e.triangle);
+    return out;
+}
+
+}  // namespace radiant

@@ -1,0 +1,65 @@
+// The Monte Carlo path's elements: every piece of the prepared scene cut into triangles no
+// longer than a target edge, by bisecting longest edges (thin boards stay strips, never
+// slivers). Rays find an element by its triangle index, so looking up what a ray lands on costs
+// nothing beyond the ray itself.
+#pragma once
+
+#include <vector>
+
+#include "scene/prepared_scene.h"
+#include "visibility/visibility.h"
+
+namespace radiant {
+
+struct Element {
+    Triangle triangle;  ///< counter-clockwise about `normal`, local frame, metres
+    Vec3 normal;        ///< unit, the front side
+    double area_m2 = 0;
+    int piece = 0;
+    int surface = 0;
+    int material = 0;
+    /// The other half of the bisection that made this element, when that half was not split
+    /// further, else −1: the two make the coarser level the discretisation estimate reads.
+    int sibling = -1;
+    int front = -1;  ///< index of its front side among the sides
+    int back = -1;   ///< of its back side; −1 when the back is black (one-sided material)
+};
+
+/// One side of an element that light can land on and leave.
+struct ElementSide {
+    int element = 0;
+    bool back = false;
+};
+
+class ElementMesh {
+public:
+    /// Cuts every piece of `scene` to edges of at most `max_edge_m`. Linear in the output.
+    ElementMesh(const PreparedScene& scene, double max_edge_m);
+
+    std::size_t size() const { return elements_.size(); }
+    const Element& operator[](std::size_t i) const { return elements_[i]; }
+    const std::vector<Element>& elements() const { return elements_; }
+    const std::vector<ElementSide>& sides() const { return sides_; }
+
+    /// One triangle per element for the ray tracer (index = element).
+    std::vector<Triangle> triangles() const;
+
+    /// The side a ray travelling along `direction` lands on when it hits `element`: its front
+    /// when it arrives against the normal, else its back (−1 if black).
+    int side_hit(int element, const Vec3& direction) const {
+        const Element& e = elements_[static_cast<std::size_t>(element)];
+        return dot(direction, e.normal) < 0 ? e.front : e.back;
+    }
+    /// Unit normal of a side: the element's, reversed for a back side.
+    Vec3 side_normal(int side) const {
+        const ElementSide& s = sides_[static_cast<std::size_t>(side)];
+        const Vec3 n = elements_[static_cast<std::size_t>(s.element)].normal;
+        return s.back ? -n : n;
+    }
+
+private:
+    std::vector<Element> elements_;
+    std::vector<ElementSide> sides_;
+};
+
+}  // namespace radiant

@@ -1,0 +1,204 @@
+#include "montecarlo/light_sources.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "formfactor/luminaire_light.h"
+#include "formfactor/point_polygon.h"
+#include "geometry/cosine_direction.h"
+
+namespace radiant {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// Next-event estimation visits every source up to this many, else a power-weighted draw of
+// this many: a floor of a hundred rooms must not cast a hundred shadow rays per hit.
+constexpr std::size_t kMaxNextEventSources = 16;
+constexpr int kGammaCells = 180;
+constexpr int kCCells = 72;
+
+std::size_t draw(const std::vector<double>& cdf, double r) {
+    const double target = r * cdf.back();
+    const auto it = std::upper_bound(cdf.begin(), cdf.end(), target);
+    return std::min(static_cast<std::size_t>(it - cdf.begin()), cdf.size() - 1);
+}
+
+Rgb scaled(const Rgb& c, double s) { return {c[0] * s, c[1] * s, c[2] * s}; }
+
+void add(Rgb& a, const Rgb& b) {
+    for (int c = 0; c < 3; ++c) a[c] += b[c];
+}
+
+Vec3 photometric_direction(const PreparedLuminaire& l, double gamma, double c) {
+    return l.aim * std::cos(gamma) +
+           (l.c0_axis * std::cos(c) + l.c90_axis * std::sin(c)) * std::sin(gamma);
+}
+
+}  // namespace
+
+LightSources::LightSources(const PreparedScene& scene, double ray_epsilon)
+    : scene_(scene), epsilon_(ray_epsilon) {
+    tables_.resize(scene.luminaires.size());
+    for (std::size_t i = 0; i < scene.luminaires.size(); ++i) {
+        const PreparedLuminaire& l = scene.luminaires[i];
+        source_power_.push_back(luminance(l.flux_lm));
+        if (l.distribution != Distribution::photometric) continue;
+        // Each cell weighs the largest intensity at its centre and corners, so that no cell
+        // with light is never drawn; the photon's weight corrects for the difference.
+        std::vector<double>& cdf = tables_[i].cdf;
+        double sum = 0;
+        for (int g = 0; g < kGammaCells; ++g) {
+            const double g0 = kPi * g / kGammaCells, g1 = kPi * (g + 1) / kGammaCells;
+            for (int k = 0; k < kCCells; ++k) {
+                const double c0 = 2 * kPi * k / kCCells, c1 = 2 * kPi * (k + 1) / kCCells;
+                double peak = 0;
+                for (const auto& [gg, cc] : {std::pair{0.5 * (g0 + g1), 0.5 * (c0 + c1)},
+                                             {g0, c0},
+                                             {g0, c1},
+                                             {g1, c0},
+                                             {g1, c1}}) {
+                    peak = std::max(peak, intensity_per_lm(l, photometric_direction(l, gg, cc)));
+                }
+                sum += peak * (std::cos(g0) - std::cos(g1)) * (c1 - c0);
+                cdf.push_back(sum);
+            }
+        }
+    }
+    for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
+        const Piece& p = scene.pieces[i];
+        const PreparedMaterial& m = scene.materials[static_cast<std::size_t>(p.material)];
+        if (!m.emits()) continue;
+        EmittingPiece e;
+        e.piece = static_cast<int>(i);
+        e.exitance = m.exitance_lm_m2;
+        double area = 0;
+        for (std::size_t k = 1; k + 1 < p.vertices.size(); ++k) {
+            area += 0.5 *
+                    length(cross(p.vertices[k] - p.vertices[0], p.vertices[k + 1] - p.vertices[0]));
+            e.fan_cdf.push_back(area);
+        }
+        if (!(area > 0)) continue;
+        source_power_.push_back(luminance(m.exitance_lm_m2) * area);
+        pieces_.push_back(std::move(e));
+    }
+    for (const double w : source_power_) {
+        total_power_ += std::max(w, 0.0);
+        source_cdf_.push_back(total_power_);
+    }
+}
+
+Vec3 LightSources::point_on(const EmittingPiece& e, double r1, double r2, double r3) const {
+    const Piece& p = scene_.pieces[static_cast<std::size_t>(e.piece)];
+    const std::size_t k = draw(e.fan_cdf, r1) + 1;
+    const double s = std::sqrt(r2);
+    return p.vertices[0] * (1 - s) + p.vertices[k] * (s * (1 - r3)) + p.vertices[k + 1] * (s * r3);
+}
+
+Vec3 LightSources::luminaire_direction(std::size_t i, SampleStream& rng, double& weight) const {
+    const PreparedLuminaire& l = scene_.luminaires[i];
+    const double r1 = rng.next(), r2 = rng.next();
+    weight = 1;
+    switch (l.distribution) {
+        case Distribution::isotropic: {
+            const double z = 1 - 2 * r1, s = std::sqrt(std::max(0.0, 1 - z * z));
+            return {s * std::cos(2 * kPi * r2), s * std::sin(2 * kPi * r2), z};
+        }
+        case Distribution::lambertian:
+            return cosine_direction(l.aim, r1, r2);
+        case Distribution::photometric:
+            break;
+    }
+    const std::vector<double>& cdf = tables_[i].cdf;
+    const std::size_t cell = draw(cdf, rng.next());
+    const int g = static_cast<int>(cell) / kCCells, k = static_cast<int>(cell) % kCCells;
+    const double cos0 = std::cos(kPi * g / kGammaCells),
+                 cos1 = std::cos(kPi * (g + 1) / kGammaCells);
+    const double gamma = std::acos(std::clamp(cos0 + (cos1 - cos0) * r1, -1.0, 1.0));
+    const double c = 2 * kPi * (k + r2) / kCCells;
+    const Vec3 u = photometric_direction(l, gamma, c);
+    const double cell_weight = cdf[cell] - (cell > 0 ? cdf[cell - 1] : 0.0);
+    const double solid_angle = (cos0 - cos1) * 2 * kPi / kCCells;
+    const double pdf = cell_weight / (cdf.back() * solid_angle);
+    weight = pdf > 0 ? intensity_per_lm(l, u) / pdf : 0.0;
+    return u;
+}
+
+Photon LightSources::emit(SampleStream& rng) const {
+    Photon photon;
+    if (empty()) return photon;
+    const std::size_t s = draw(source_cdf_, rng.next());
+    const double share = source_power_[s] / total_power_;
+    if (s < scene_.luminaires.size()) {
+        const PreparedLuminaire& l = scene_.luminaires[s];
+        double weight = 1;
+        photon.direction = luminaire_direction(s, rng, weight);
+        photon.origin = l.position;
+        photon.flux = scaled(l.flux_lm, weight / share);
+        return photon;
+    }
+    const EmittingPiece& e = pieces_[s - scene_.luminaires.size()];
+    const Piece& p = scene_.pieces[static_cast<std::size_t>(e.piece)];
+    const double r1 = rng.next(), r2 = rng.next(), r3 = rng.next();
+    photon.origin = point_on(e, r1, r2, r3) + p.normal * epsilon_;
+    photon.direction = cosine_direction(p.normal, rng.next(), rng.next());
+    photon.flux = scaled(e.exitance, e.fan_cdf.back() / share);
+    return photon;
+}
+
+Rgb LightSources::luminaire_part(std::size_t i, const Vec3& x, const Vec3& n,
+                                 const Visibility& visibility, std::uint64_t& rays) const {
+    const PreparedLuminaire& l = scene_.luminaires[i];
+    const double kernel = direct_kernel_per_lm(l, x, n);
+    if (!(kernel > 0)) return {0, 0, 0};
+    ++rays;
+    if (!visibility.visible(x + n * epsilon_, l.position)) return {0, 0, 0};
+    return scaled(l.flux_lm, kernel);
+}
+
+Rgb LightSources::piece_part(const EmittingPiece& e, const Vec3& x, const Vec3& n,
+                             const Visibility& visibility, SampleStream& rng, int samples,
+                             std::uint64_t& rays) const {
+    const Piece& p = scene_.pieces[static_cast<std::size_t>(e.piece)];
+    const double factor = front_point_to_polygon_factor(x, n, p.vertices, p.normal);
+    if (!(factor > 0)) return {0, 0, 0};
+    const Vec3 from = x + n * epsilon_;
+    int seen = 0;
+    for (int k = 0; k < samples; ++k) {
+        const double r1 = rng.next(), r2 = rng.next(), r3 = rng.next();
+        ++rays;
+        seen += visibility.visible(from, point_on(e, r1, r2, r3) + p.normal * epsilon_) ? 1 : 0;
+    }
+    return scaled(e.exitance, factor * seen / samples);
+}
+
+Rgb LightSources::direct_at(const Vec3& x, const Vec3& n, const Visibility& visibility,
+                            SampleStream& rng, std::uint64_t& rays) const {
+    Rgb sum{0, 0, 0};
+    const std::size_t count = source_power_.size();
+    const std::size_t luminaires = scene_.luminaires.size();
+    auto part = [&](std::size_t s) {
+        return s < luminaires ? luminaire_part(s, x, n, visibility, rays)
+                              : piece_part(pieces_[s - luminaires], x, n, visibility, rng, 1, rays);
+    };
+    if (count <= kMaxNextEventSources) {
+        for (std::size_t s = 0; s < count; ++s) add(sum, part(s));
+        return sum;
+    }
+    for (std::size_t k = 0; k < kMaxNextEventSources; ++k) {
+        const std::size_t s = draw(source_cdf_, rng.next());
+        const double p = source_power_[s] / total_power_ * kMaxNextEventSources;
+        add(sum, scaled(part(s), 1 / p));
+    }
+    return sum;
+}
+
+Rgb LightSources::emitting_pieces_at(const Vec3& x, const Vec3& n, const Visibility& visibility,
+                                     SampleStream& rng, int samples, std::uint64_t& rays) const {
+    Rgb sum{0, 0, 0};
+    for (const EmittingPiece& e : pieces_)
+        add(sum, piece_part(e, x, n, visibility, rng, samples, rays));
+    return sum;
+}
+
+}  // namespace radiant

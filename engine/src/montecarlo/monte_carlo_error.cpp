@@ -1,0 +1,82 @@
+#include "montecarlo/monte_carlo_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radiant {
+namespace {
+
+// The noise parts are measured standard deviations; these margins make the estimate a bound
+// on the realised error rather than its expectation (the spread of a few ray sets or sixteen
+// batches is itself uncertain, and photon noise is shared by neighbouring points, so a set's
+// RMS averages it less than independent noise).
+constexpr double kGatherMargin = 1.5;
+constexpr double kPhotonMargin = 1.5;
+// A budget grows at most this much per round, so that a poor first variance cannot send the
+// solve far past its tolerance.
+constexpr double kMaxGrowth = 8;
+// When the model says the budget suffices but the estimate still misses the target, the
+// larger noise part's samples grow by this.
+constexpr double kMinGrowth = 1.5;
+// Bias may take this much of the target² before the noise budget is held to what it leaves.
+constexpr double kMinNoiseShare = 0.1;
+
+}  // namespace
+
+MonteCarloError combine_errors(const std::vector<GatheredPoint>& points,
+                               const std::vector<std::size_t>& set_sizes) {
+    MonteCarloError worst;
+    std::size_t first = 0;
+    for (const std::size_t size : set_sizes) {
+        double mean = 0, gather = 0, photon = 0, bias = 0;
+        for (std::size_t i = first; i < first + size; ++i) {
+            mean += points[i].illuminance;
+            gather += points[i].gather_variance;
+            photon += points[i].photon_variance;
+            bias += points[i].coarse_difference_squared - points[i].coarse_difference_variance;
+        }
+        first += size;
+        if (size == 0 || !(mean > 0)) continue;
+        const double n = static_cast<double>(size);
+        mean /= n;
+        MonteCarloError e;
+        e.parts.gather_noise = kGatherMargin * std::sqrt(gather / n) / mean;
+        e.parts.photon_noise = kPhotonMargin * std::sqrt(photon / n) / mean;
+        e.parts.discretisation = std::sqrt(std::max(0.0, bias) / n) / mean;
+        e.total = std::sqrt(e.parts.gather_noise * e.parts.gather_noise +
+                            e.parts.photon_noise * e.parts.photon_noise +
+                            e.parts.discretisation * e.parts.discretisation);
+        if (!(e.total <= worst.total)) worst = e;
+    }
+    return worst;
+}
+
+SampleBudget next_budget(const MonteCarloError& error, const SampleBudget& now, double target,
+                         double seconds_per_photon, double seconds_per_set) {
+    const double g = error.parts.gather_noise, f = error.parts.photon_noise;
+    const double b = error.parts.discretisation;
+    const double noise = std::max(target * target - b * b, kMinNoiseShare * target * target);
+    const double cost_set = std::max(seconds_per_set, 1e-12);
+    const double cost_photon = std::max(seconds_per_photon, 1e-15);
+    const double a_set = g * g * now.sets, a_photon = f * f * static_cast<double>(now.photons);
+    const double lagrange = std::sqrt(a_set * cost_set) + std::sqrt(a_photon * cost_photon);
+    const double sets = std::sqrt(a_set / cost_set) * lagrange / noise;
+    const double photons = std::sqrt(a_photon / cost_photon) * lagrange / noise;
+    SampleBudget next;
+    next.sets = static_cast<int>(
+        std::clamp(std::ceil(sets), static_cast<double>(now.sets), kMaxGrowth * now.sets));
+    next.photons =
+        static_cast<std::size_t>(std::clamp(std::ceil(photons), static_cast<double>(now.photons),
+                                            kMaxGrowth * static_cast<double>(now.photons)));
+    if (next.sets == now.sets && next.photons == now.photons) {
+        if (g >= f) {
+            next.sets = static_cast<int>(std::ceil(kMinGrowth * now.sets));
+        } else {
+            next.photons =
+                static_cast<std::size_t>(std::ceil(kMinGrowth * static_cast<double>(now.photons)));
+        }
+    }
+    return next;
+}
+
+}  // namespace radiant

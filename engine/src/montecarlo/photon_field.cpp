@@ -1,0 +1,113 @@
+#include "montecarlo/photon_field.h"
+
+#include <algorithm>
+
+#include <tbb/parallel_for.h>
+
+#include "geometry/cosine_direction.h"
+#include "solution/surface_summary.h"
+
+namespace radiant {
+namespace {
+
+// Chunks traced between two looks at `stop`, a whole number of batch rounds.
+constexpr std::size_t kWaveChunks = 8 * PhotonField::kBatches;
+// A photon in a furnace of reflectance 0.999 bounces a thousand times on average; this only
+// stops one that a rounding error keeps inside a closed solid.
+constexpr int kMaxBounces = 100000;
+// Key of the photons' sample streams, apart from the sensors' and the mesh's.
+constexpr std::uint64_t kPhotonStream = 0x70686f746f6eull;
+
+}  // namespace
+
+PhotonField::PhotonField(const PreparedScene& scene, const ElementMesh& mesh, std::uint64_t seed)
+    : scene_(scene), mesh_(mesh), seed_(seed) {
+    const std::size_t sides = mesh.sides().size();
+    total_.assign(sides, Rgb{0, 0, 0});
+    indirect_.assign(sides, Rgb{0, 0, 0});
+    batch_.assign(sides * kBatches, 0.0f);
+    inverse_area_.resize(sides);
+    for (std::size_t s = 0; s < sides; ++s) {
+        const double area = mesh[static_cast<std::size_t>(mesh.sides()[s].element)].area_m2;
+        inverse_area_[s] = area > 0 ? 1 / area : 0.0;
+    }
+}
+
+Rgb PhotonField::per_area(const std::vector<Rgb>& tally, int side) const {
+    const auto s = static_cast<std::size_t>(side);
+    const double scale = chunks_ ? inverse_area_[s] / static_cast<double>(photons()) : 0.0;
+    return {tally[s][0] * scale, tally[s][1] * scale, tally[s][2] * scale};
+}
+
+std::size_t PhotonField::memory_bytes() const {
+    return (total_.capacity() + indirect_.capacity()) * sizeof(Rgb) +
+           batch_.capacity() * sizeof(float) + inverse_area_.capacity() * sizeof(double);
+}
+
+void PhotonField::trace_chunk(std::size_t chunk, const LightSources& sources,
+                              const Visibility& visibility, std::vector<Deposit>& out,
+                              std::uint64_t& rays) const {
+    const double eps = visibility.epsilon();
+    const double t_max = 4 * scene_.diagonal_m + 1;
+    for (std::size_t p = 0; p < kChunkPhotons; ++p) {
+        SampleStream rng(seed_, kPhotonStream, chunk * kChunkPhotons + p);
+        Photon photon = sources.emit(rng);
+        Vec3 origin = photon.origin, direction = photon.direction;
+        Rgb flux = photon.flux;
+        for (int bounce = 0; bounce < kMaxBounces; ++bounce) {
+            ++rays;
+            const RayHit hit = visibility.intersect(origin, direction, t_max);
+            if (hit.triangle < 0) break;
+            const int side = mesh_.side_hit(hit.triangle, direction);
+            if (side < 0) break;
+            out.push_back({side, bounce > 0, flux});
+            const Element& e = mesh_[static_cast<std::size_t>(hit.triangle)];
+            const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
+            const double survive = std::min(1.0, std::max({rho[0], rho[1], rho[2]}));
+            if (!(survive > 0) || rng.next() >= survive) break;
+            for (int c = 0; c < 3; ++c) flux[c] *= rho[c] / survive;
+            const Vec3 n = mesh_.side_normal(side);
+            origin = origin + direction * hit.t + n * eps;
+            direction = cosine_direction(n, rng.next(), rng.next());
+        }
+    }
+}
+
+std::uint64_t PhotonField::trace(std::size_t photons, const LightSources& sources,
+                                 const Visibility& visibility, const std::function<bool()>& stop) {
+    if (sources.empty()) return 0;
+    const std::size_t round = kBatches * kChunkPhotons;
+    std::size_t remaining = (photons + round - 1) / round * kBatches;
+    std::uint64_t rays = 0;
+    std::vector<std::vector<Deposit>> deposits(kWaveChunks);
+    std::vector<std::uint64_t> wave_rays(kWaveChunks);
+    const int channels = scene_.channels;
+    while (remaining > 0 && !stop()) {
+        const std::size_t wave = std::min(remaining, kWaveChunks);
+        tbb::parallel_for(std::size_t{0}, wave, [&](std::size_t k) {
+            deposits[k].clear();
+            wave_rays[k] = 0;
+            trace_chunk(chunks_ + k, sources, visibility, deposits[k], wave_rays[k]);
+        });
+        // In chunk order: the sums do not depend on which thread traced what.
+        for (std::size_t k = 0; k < wave; ++k) {
+            const std::size_t b = (chunks_ + k) % kBatches;
+            for (const Deposit& d : deposits[k]) {
+                const auto s = static_cast<std::size_t>(d.side);
+                for (int c = 0; c < 3; ++c) total_[s][c] += d.flux[c];
+                if (!d.indirect) continue;
+                for (int c = 0; c < 3; ++c) indirect_[s][c] += d.flux[c];
+                const Element& e = mesh_[static_cast<std::size_t>(mesh_.sides()[s].element)];
+                const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
+                batch_[s * kBatches + b] += static_cast<float>(photometric(
+                    Rgb{rho[0] * d.flux[0], rho[1] * d.flux[1], rho[2] * d.flux[2]}, channels));
+            }
+            rays += wave_rays[k];
+        }
+        chunks_ += wave;
+        remaining -= wave;
+    }
+    return rays;
+}
+
+}  // namespace radiant

@@ -1,0 +1,65 @@
+// The reflected light as photons leave it: photons from the light sources bounce through the
+// element mesh (Russian roulette on reflectance) and leave their flux on every side they land
+// on. Tallies per side: all light (for the surfaces' averages) and what arrived after at least
+// one reflection (the indirect field the sensors gather; direct light is found exactly there).
+// The photons are traced in chunks keyed by their index, and chunks are added in index order,
+// so the field is the same for any number of threads. Chunks fall into batches, whose spread
+// measures the field's noise.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "montecarlo/element_mesh.h"
+#include "montecarlo/light_sources.h"
+#include "visibility/visibility.h"
+
+namespace radiant {
+
+class PhotonField {
+public:
+    static constexpr int kBatches = 16;
+    static constexpr std::size_t kChunkPhotons = 1024;
+
+    PhotonField(const PreparedScene& scene, const ElementMesh& mesh, std::uint64_t seed);
+
+    /// Traces at least `photons` more photons, in waves of whole rounds of kBatches chunks so
+    /// that every batch holds as many. Returns the rays cast. `stop` is polled between waves.
+    std::uint64_t trace(std::size_t photons, const LightSources& sources,
+                        const Visibility& visibility, const std::function<bool()>& stop);
+
+    std::size_t photons() const { return chunks_ * kChunkPhotons; }
+
+    /// Irradiance (lux, per channel) on `side` after one reflection or more.
+    Rgb indirect(int side) const { return per_area(indirect_, side); }
+    /// All irradiance on `side`: direct and reflected.
+    Rgb total(int side) const { return per_area(total_, side); }
+    /// Photometric light reflected by `side` from indirect irradiance (ρ ⊙ H_ind), in batch `b`.
+    double batch_reflected(int side, int batch) const {
+        const auto s = static_cast<std::size_t>(side);
+        return batch_[s * kBatches + static_cast<std::size_t>(batch)] * inverse_area_[s] *
+               kBatches / static_cast<double>(photons());
+    }
+    std::size_t memory_bytes() const;
+
+private:
+    struct Deposit {
+        int side;
+        bool indirect;
+        Rgb flux;
+    };
+    Rgb per_area(const std::vector<Rgb>& tally, int side) const;
+    void trace_chunk(std::size_t chunk, const LightSources& sources, const Visibility& visibility,
+                     std::vector<Deposit>& out, std::uint64_t& rays) const;
+
+    const PreparedScene& scene_;
+    const ElementMesh& mesh_;
+    std::uint64_t seed_;
+    std::size_t chunks_ = 0;
+    std::vector<Rgb> total_, indirect_;  ///< summed photon flux per side (divide by photons)
+    std::vector<float> batch_;  ///< photometric ρ ⊙ indirect flux, [side · kBatches + b]
+    std::vector<double> inverse_area_;  ///< per side, 1/m² (0 for a degenerate element)
+};
+
+}  // namespace radiant

@@ -1,0 +1,178 @@
+#include "montecarlo/sensor_gather.h"
+
+#include <algorithm>
+#include <array>
+
+#include <tbb/parallel_for.h>
+
+#include "formfactor/luminaire_light.h"
+#include "geometry/cosine_direction.h"
+#include "solution/surface_summary.h"
+
+namespace radiant {
+namespace {
+
+constexpr int kStrata = 8;  // kStrata² = SensorGather::kRaysPerSet
+static_assert(kStrata * kStrata == SensorGather::kRaysPerSet);
+// Visibility points per emitting piece in each set at a sensor.
+constexpr int kPieceSamples = 4;
+constexpr std::uint64_t kSensorStream = 0x73656e736f72ull;
+constexpr int kBatches = PhotonField::kBatches;
+
+double sample_variance_of_mean(const double* values, int n) {
+    if (n < 2) return 0;
+    double mean = 0;
+    for (int k = 0; k < n; ++k) mean += values[k];
+    mean /= n;
+    double sum = 0;
+    for (int k = 0; k < n; ++k) sum += (values[k] - mean) * (values[k] - mean);
+    return sum / (static_cast<double>(n) * (n - 1));
+}
+
+}  // namespace
+
+SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
+                           const LightSources& sources, const Visibility& visibility,
+                           std::uint64_t seed)
+    : scene_(scene), mesh_(mesh), sources_(sources), visibility_(visibility), seed_(seed) {
+    for (const PreparedSensorSet& set : scene.sensors) {
+        for (const Vec3& p : set.points) points_.push_back({p, set.normal, 0, {}, {}});
+    }
+}
+
+std::size_t SensorGather::memory_bytes() const {
+    std::size_t bytes = points_.capacity() * sizeof(Point);
+    for (const Point& p : points_)
+        bytes += p.set_direct.capacity() * sizeof(double) + p.hits.capacity() * sizeof(int);
+    return bytes;
+}
+
+void SensorGather::gather_point(std::size_t index, Point& point, int sets,
+                                std::uint64_t& rays) const {
+    const int channels = scene_.channels;
+    const double eps = visibility_.epsilon();
+    const double t_max = 4 * scene_.diagonal_m + 1;
+    const Vec3 origin = point.position + point.normal * eps;
+    if (point.set_direct.empty()) {
+        point.luminaires = photometric(
+            luminaire_irradiance_at(scene_, visibility_, point.position, point.normal, rays),
+            channels);
+    }
+    for (int set = static_cast<int>(point.set_direct.size()); set < sets; ++set) {
+        SampleStream rng(seed_, kSensorStream, index, static_cast<std::uint64_t>(set));
+        double direct =
+            photometric(sources_.emitting_pieces_at(point.position, point.normal, visibility_, rng,
+                                                    kPieceSamples, rays),
+                        channels);
+        double reflected = 0;
+        for (int k = 0; k < kRaysPerSet; ++k) {
+            const double r1 = (k / kStrata + rng.next()) / kStrata;
+            const double r2 = (k % kStrata + rng.next()) / kStrata;
+            const Vec3 d = cosine_direction(point.normal, r1, r2);
+            ++rays;
+            const RayHit hit = visibility_.intersect(origin, d, t_max);
+            const int side = hit.triangle < 0 ? -1 : mesh_.side_hit(hit.triangle, d);
+            point.hits.push_back(side);
+            if (side < 0) continue;
+            const Element& e = mesh_[static_cast<std::size_t>(hit.triangle)];
+            const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
+            const Vec3 n = mesh_.side_normal(side);
+            const Rgb h = sources_.direct_at(origin + d * hit.t, n, visibility_, rng, rays);
+            reflected += photometric(Rgb{rho[0] * h[0], rho[1] * h[1], rho[2] * h[2]}, channels);
+        }
+        point.set_direct.push_back(direct + reflected / kRaysPerSet);
+    }
+}
+
+std::uint64_t SensorGather::gather(int sets, const std::function<bool()>& stop) {
+    std::vector<std::uint64_t> rays(points_.size(), 0);
+    tbb::parallel_for(std::size_t{0}, points_.size(), [&](std::size_t i) {
+        if (!stop()) gather_point(i, points_[i], sets, rays[i]);
+    });
+    sets_ = sets;
+    for (const Point& p : points_) sets_ = std::min(sets_, static_cast<int>(p.set_direct.size()));
+    std::uint64_t total = 0;
+    for (const std::uint64_t r : rays) total += r;
+    return total;
+}
+
+std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) const {
+    const int channels = scene_.channels;
+    const std::vector<ElementSide>& sides = mesh_.sides();
+    // The reflected indirect light of every side: ρ ⊙ H_ind, photometric.
+    std::vector<double> reflected(sides.size());
+    tbb::parallel_for(std::size_t{0}, sides.size(), [&](std::size_t s) {
+        const Element& e = mesh_[static_cast<std::size_t>(sides[s].element)];
+        const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
+        const Rgb h = field.indirect(static_cast<int>(s));
+        reflected[s] = photometric(Rgb{rho[0] * h[0], rho[1] * h[1], rho[2] * h[2]}, channels);
+    });
+    // A side's twin at the coarser level: the same side of its sibling, or none.
+    auto sibling_side = [&](int side) {
+        const ElementSide& s = sides[static_cast<std::size_t>(side)];
+        const Element& e = mesh_[static_cast<std::size_t>(s.element)];
+        if (e.sibling < 0) return -1;
+        const Element& o = mesh_[static_cast<std::size_t>(e.sibling)];
+        return s.back ? o.back : o.front;
+    };
+    std::vector<GatheredPoint> out(points_.size());
+    tbb::parallel_for(std::size_t{0}, points_.size(), [&](std::size_t i) {
+        const Point& p = points_[i];
+        const int sets = sets_;
+        GatheredPoint& g = out[i];
+        g.illuminance = p.luminaires;
+        if (sets == 0) return;
+        std::vector<double> set_value(static_cast<std::size_t>(sets));
+        std::array<double, kBatches> batch{}, batch_coarse{};
+        double coarse = 0, fine_sum = 0;
+        for (int j = 0; j < sets; ++j) {
+            double fine = 0;
+            for (int k = 0; k < kRaysPerSet; ++k) {
+                const int side = p.hits[static_cast<std::size_t>(j * kRaysPerSet + k)];
+                if (side < 0) continue;
+                fine += reflected[static_cast<std::size_t>(side)];
+                const int twin = sibling_side(side);
+                const double a =
+                    mesh_[static_cast<std::size_t>(sides[static_cast<std::size_t>(side)].element)]
+                        .area_m2;
+                const double b = twin < 0
+                                     ? 0.0
+                                     : mesh_[static_cast<std::size_t>(
+                                                 sides[static_cast<std::size_t>(twin)].element)]
+                                           .area_m2;
+                const double wa = a / (a + b), wb = b / (a + b);
+                coarse += twin < 0 ? reflected[static_cast<std::size_t>(side)]
+                                   : wa * reflected[static_cast<std::size_t>(side)] +
+                                         wb * reflected[static_cast<std::size_t>(twin)];
+                for (int q = 0; q < kBatches; ++q) {
+                    const double f = field.batch_reflected(side, q);
+                    batch[static_cast<std::size_t>(q)] += f;
+                    batch_coarse[static_cast<std::size_t>(q)] +=
+                        twin < 0 ? f : wa * f + wb * field.batch_reflected(twin, q);
+                }
+            }
+            fine_sum += fine;
+            set_value[static_cast<std::size_t>(j)] =
+                p.set_direct[static_cast<std::size_t>(j)] + fine / kRaysPerSet;
+        }
+        const double rays = static_cast<double>(sets) * kRaysPerSet;
+        double mean = 0;
+        for (const double v : set_value) mean += v;
+        g.illuminance += mean / sets;
+        g.gather_variance = sample_variance_of_mean(set_value.data(), sets);
+        std::array<double, kBatches> difference{};
+        for (int q = 0; q < kBatches; ++q) {
+            const auto qi = static_cast<std::size_t>(q);
+            batch[qi] /= rays;
+            batch_coarse[qi] /= rays;
+            difference[qi] = batch[qi] - batch_coarse[qi];
+        }
+        g.photon_variance = sample_variance_of_mean(batch.data(), kBatches);
+        const double d = (fine_sum - coarse) / rays;
+        g.coarse_difference_squared = d * d;
+        g.coarse_difference_variance = sample_variance_of_mean(difference.data(), kBatches);
+    });
+    return out;
+}
+
+}  // namespace radiant

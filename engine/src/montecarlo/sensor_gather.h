@@ -1,0 +1,74 @@
+// Sensor illuminance by final gather over the photon field: the luminaires' light exactly (one
+// shadow ray each), the emitting surfaces' by exact factors times sampled visibility, and the
+// reflected light from sets of cosine-distributed rays. Where a ray lands, the light that point
+// reflects is its direct light found there (next-event estimation) plus the photon field's
+// indirect irradiance on the element. The rays and the direct light are kept, so a denser
+// photon field re-prices them without casting them again.
+//
+// Each point's error has three parts, all measured from the data:
+//   gather noise   the spread of its ray sets;
+//   photon noise   the spread of its value over the field's batches;
+//   discretisation the change when the field is read at the coarser level of the mesh (the
+//                  elements' bisection parents), less what the photon noise explains
+//                  (combine_errors takes the difference over a sensor set).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "montecarlo/element_mesh.h"
+#include "montecarlo/light_sources.h"
+#include "montecarlo/photon_field.h"
+
+namespace radiant {
+
+/// One point's value and the variances of its error parts (lux and lux²). The coarser level's
+/// difference comes with its own noise variance: the bias is what the difference holds beyond
+/// its noise, which only a sum over many points tells reliably.
+struct GatheredPoint {
+    double illuminance = 0;
+    double gather_variance = 0;
+    double photon_variance = 0;
+    double coarse_difference_squared = 0;
+    double coarse_difference_variance = 0;
+};
+
+class SensorGather {
+public:
+    static constexpr int kRaysPerSet = 64;  ///< 8 × 8 strata of the cosine-weighted hemisphere
+
+    SensorGather(const PreparedScene& scene, const ElementMesh& mesh, const LightSources& sources,
+                 const Visibility& visibility, std::uint64_t seed);
+
+    /// Casts ray sets until every point has `sets` of them; the exact luminaire light comes with
+    /// the first. Returns the rays cast. Parallel over points; deterministic.
+    std::uint64_t gather(int sets, const std::function<bool()>& stop);
+    int sets() const { return sets_; }
+    std::size_t points() const { return points_.size(); }
+
+    /// Every point's value and error parts on `field`, in the order of the sets and their
+    /// points.
+    std::vector<GatheredPoint> evaluate(const PhotonField& field) const;
+    std::size_t memory_bytes() const;
+
+private:
+    struct Point {
+        Vec3 position;
+        Vec3 normal;
+        double luminaires = 0;           ///< photometric, exact
+        std::vector<double> set_direct;  ///< per set: emitting pieces + mean ρ ⊙ E_direct(hit)
+        std::vector<int> hits;           ///< per ray, set by set: the side it landed on, or −1
+    };
+    void gather_point(std::size_t index, Point& point, int sets, std::uint64_t& rays) const;
+
+    const PreparedScene& scene_;
+    const ElementMesh& mesh_;
+    const LightSources& sources_;
+    const Visibility& visibility_;
+    std::uint64_t seed_;
+    std::vector<Point> points_;
+    int sets_ = 0;
+};
+
+}  // namespace radiant

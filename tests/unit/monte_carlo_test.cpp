@@ -1,0 +1,160 @@
+// The Monte Carlo method: its elements, its light sources, and solves whose answer is known
+// exactly or from another method — each within the error the solve itself estimates.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include "montecarlo/element_mesh.h"
+#include "montecarlo/light_sources.h"
+#include "scene/prepared_scene.h"
+#include "scene_builder.h"
+#include "solve_with.h"
+
+namespace radiant {
+namespace {
+
+using testing::describe;
+
+Scene panel_room_with_sensors() {
+    Scene scene = testing::room_with_ceiling_panel(0.6, 1000);
+    scene.sensors.push_back(
+        testing::sensor_grid("work plane", {0.25, 0.25, 0.8}, {3.5, 0, 0}, {0, 3.5, 0}, 7, 7));
+    return scene;
+}
+
+double rms_relative_error(const std::vector<double>& values, const std::vector<double>& exact) {
+    double sum = 0, mean = 0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        sum += (values[i] - exact[i]) * (values[i] - exact[i]);
+        mean += exact[i];
+    }
+    mean /= static_cast<double>(exact.size());
+    return std::sqrt(sum / static_cast<double>(exact.size())) / mean;
+}
+
+TEST(ElementMesh, CutsPiecesToTheEdgeAndKeepsTheirArea) {
+    const PreparedScene scene = prepare_scene(panel_room_with_sensors());
+    const double edge = 0.3;
+    const ElementMesh mesh(scene, edge);
+    std::vector<double> area(scene.pieces.size(), 0.0);
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+        const Element& e = mesh[i];
+        for (const auto& [p, q] : {std::pair{e.triangle.a, e.triangle.b},
+                                   {e.triangle.b, e.triangle.c},
+                                   {e.triangle.c, e.triangle.a}}) {
+            EXPECT_LE(length(q - p), edge * (1 + 1e-12));
+        }
+        EXPECT_GT(dot(cross(e.triangle.b - e.triangle.a, e.triangle.c - e.triangle.a), e.normal),
+                  0);
+        area[static_cast<std::size_t>(e.piece)] += e.area_m2;
+        if (e.sibling >= 0) {
+            const Element& s = mesh[static_cast<std::size_t>(e.sibling)];
+            EXPECT_EQ(s.sibling, static_cast<int>(i));
+            EXPECT_EQ(s.piece, e.piece);
+        }
+        EXPECT_EQ(e.back, -1);  // gray one-sided walls
+    }
+    for (std::size_t p = 0; p < scene.pieces.size(); ++p)
+        EXPECT_NEAR(area[p], scene.pieces[p].area_m2, 1e-9 * scene.pieces[p].area_m2);
+}
+
+TEST(LightSources, PhotonsCarryTheEmittedFluxOnAverage) {
+    Scene scene = panel_room_with_sensors();
+    scene.luminaires.push_back(
+        testing::luminaire("lamp", {1, 1, 2.5}, 2000, Distribution::lambertian, {0, 0, -1}));
+    const PreparedScene prepared = prepare_scene(scene);
+    const LightSources sources(prepared, 1e-6);
+    const double emitted = 2000 + 1000 * 1.0;  // the lamp, and the 1 m² panel
+    double sum = 0;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) {
+        SampleStream rng(3, 0, static_cast<std::uint64_t>(i));
+        sum += sources.emit(rng).flux[0];
+    }
+    EXPECT_NEAR(sum / n, emitted, 1e-9 * emitted);  // weights are exact for these sources
+}
+
+TEST(MonteCarlo, FurnaceSensorsSeeTheExactRadiosityWithinTheEstimate) {
+    for (const double rho : {0.5, 0.9}) {
+        Scene scene = testing::furnace_cube(rho);
+        scene.sensors.push_back(testing::sensor_points(
+            "inside", {{0.5, 0.5, 0.5}, {0.2, 0.7, 0.3}, {0.8, 0.1, 0.9}, {0.5, 0.5, 0.05}}));
+        const Result r = testing::solve_with(scene, "monte-carlo", 0.01);
+        ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+        const double exact = 1 / (1 - rho);
+        const std::vector<double> expected(4, exact);
+        const double error = rms_relative_error(r.sensors.at(0).illuminance, expected);
+        EXPECT_LE(error, r.stats.error_estimate) << "rho " << rho << ": " << describe(r);
+        EXPECT_LE(r.stats.error_estimate, 0.01);
+    }
+}
+
+TEST(MonteCarlo, AgreesWithTheDenseSolverWithinBothEstimates) {
+    const Scene scene = panel_room_with_sensors();
+    const Result mc = testing::solve_with(scene, "monte-carlo", 0.01);
+    const Result h = testing::solve_with(scene, "direct", 0.01);
+    ASSERT_EQ(mc.status, SolveStatus::converged) << describe(mc);
+    ASSERT_NE(h.status, SolveStatus::failed) << describe(h);
+    const double difference =
+        rms_relative_error(mc.sensors.at(0).illuminance, h.sensors.at(0).illuminance);
+    EXPECT_LE(difference, mc.stats.error_estimate + h.stats.error_estimate) << describe(mc);
+    // Tolerance means error: no solve 20× more accurate than asked.
+    EXPECT_GE(mc.stats.error_estimate, 0.05 * 0.01);
+    EXPECT_GT(mc.stats.error_parts.gather_noise, 0);
+    EXPECT_GT(mc.stats.error_parts.photon_noise, 0);
+}
+
+TEST(MonteCarlo, AMirrorImageAgreesWithinBothEstimates) {
+    const Scene scene = panel_room_with_sensors();
+    Scene mirrored = scene;  // x → 4 − x; polygons reversed to keep their fronts
+    for (auto& s : mirrored.surfaces) {
+        auto& poly = std::get<Polygon>(s.geometry);
+        for (auto& v : poly) v.x = 4 - v.x;
+        std::reverse(poly.begin(), poly.end());
+    }
+    for (auto& v : mirrored.sensors.at(0).points) v.x = 4 - v.x;
+    const Result a = testing::solve_with(scene, "monte-carlo", 0.01);
+    const Result b = testing::solve_with(mirrored, "monte-carlo", 0.01);
+    ASSERT_EQ(b.status, SolveStatus::converged) << describe(b);
+    const double difference =
+        rms_relative_error(b.sensors.at(0).illuminance, a.sensors.at(0).illuminance);
+    EXPECT_GT(difference, 0);  // other samples
+    EXPECT_LE(difference, a.stats.error_estimate + b.stats.error_estimate);
+}
+
+TEST(MonteCarlo, SameAnswerForAnyNumberOfThreads) {
+    Scene scene = panel_room_with_sensors();
+    scene.luminaires.push_back(testing::luminaire("lamp", {3, 3, 2.5}, 1500));
+    SolveOptions options;
+    options.method = "monte-carlo";
+    options.threads = 1;
+    const Result one = solve(scene, options);
+    options.threads = 2;
+    const Result two = solve(scene, options);
+    ASSERT_EQ(one.status, SolveStatus::converged) << describe(one);
+    EXPECT_EQ(one.sensors.at(0).illuminance, two.sensors.at(0).illuminance);
+    EXPECT_EQ(one.stats.rays, two.stats.rays);
+    EXPECT_EQ(one.stats.error_estimate, two.stats.error_estimate);
+}
+
+TEST(MonteCarlo, RefusesASceneWithoutSensors) {
+    const Result r = testing::solve_with(testing::furnace_cube(0.5), "monte-carlo");
+    EXPECT_EQ(r.status, SolveStatus::failed);
+    EXPECT_NE(r.error.find("sensors"), std::string::npos) << r.error;
+}
+
+TEST(MonteCarlo, ReportsItsStages) {
+    const Result r = testing::solve_with(panel_room_with_sensors(), "monte-carlo");
+    std::vector<std::string> names;
+    for (const StageStats& s : r.stats.stages) names.push_back(s.name);
+    EXPECT_EQ(names,
+              (std::vector<std::string>{"prepare", "meshing", "photons", "gather", "estimate"}));
+    std::uint64_t rays = 0;
+    for (const StageStats& s : r.stats.stages) rays += s.rays;
+    EXPECT_EQ(rays, r.stats.rays);
+}
+
+}  // namespace
+}  // namespace radiant
