@@ -9,7 +9,6 @@
 #include <utility>
 
 namespace radiant::bench {
-namespace {
 
 std::string fixed(double v, int digits) {
     if (std::isnan(v)) return "n/a";
@@ -24,6 +23,8 @@ std::string sci(double v) {
     std::snprintf(buf, sizeof buf, "%.3g", v);
     return buf;
 }
+
+namespace {
 
 // A peer's runs ("done") have no convergence of their own: each is one setting's answer.
 bool usable(const BenchRow& r) {

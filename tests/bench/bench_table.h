@@ -27,6 +27,11 @@ struct BenchRow {
     std::string stages;   ///< seconds per stage of the solve
 };
 
+/// A table cell: `v` with `digits` decimals, or "n/a" for NaN.
+std::string fixed(double v, int digits);
+/// A table cell: `v` to three significant digits, or "n/a" for NaN.
+std::string sci(double v);
+
 const std::vector<std::string>& table_header();
 std::vector<std::string> table_cells(const BenchRow& row);
 

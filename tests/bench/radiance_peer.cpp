@@ -20,20 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string fixed(double v, int digits) {
-    if (std::isnan(v)) return "n/a";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
-
-std::string sci(double v) {
-    if (std::isnan(v)) return "n/a";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
 // A directory name for a scene: its row name without path separators.
 std::string dir_name(const std::string& name) {
     std::string out;
