@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 
+#include "radiant/proto/lighting_json.h"
+
 namespace radiant::proto {
 namespace {
 
@@ -116,6 +118,7 @@ nlohmann::json sensors_to_json(const std::vector<SensorResult>& sensors) {
                                                               {"u0", s.u0},
                                                               {"ud", s.ud}});
         if (s.grid) set["grid"] = grid_json(*s.grid);
+        add_sensor_design(s, set);
     }
     return out;
 }
@@ -133,6 +136,7 @@ nlohmann::json result_to_json(const Result& result) {
                             {"average_irradiance", s.average_irradiance},
                             {"average_radiosity", s.average_radiosity}});
     }
+    add_lighting(result, doc);
     if (result.mesh) doc["mesh"] = mesh_json(*result.mesh);
     if (const auto bad = non_finite(doc, nlohmann::json::json_pointer())) {
         nlohmann::json failed_doc = document(

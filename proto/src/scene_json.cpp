@@ -26,8 +26,8 @@ constexpr std::string_view kFormat = "radiant-scene/1";
 /// The part of a pointer that names one scene entity: "/surfaces/3", "/materials/wall",
 /// "/settings". Entities are the unit at which structural damage hides semantic problems.
 std::string entity_of(const std::string& pointer) {
-    static const std::set<std::string, std::less<>> lists{"materials", "surfaces", "luminaires",
-                                                          "sensors"};
+    static const std::set<std::string, std::less<>> lists{
+        "materials", "surfaces", "luminaires", "sensors", "observers", "light_scenes"};
     const std::size_t first = pointer.find('/', 1);
     if (first == std::string::npos) return pointer;
     const std::string_view head = std::string_view(pointer).substr(1, first - 1);
@@ -151,6 +151,16 @@ private:
     MeshGeometry mesh(const Json& j, const Ptr& p);
     BoxGeometry box(const Json& j, const Ptr& p);
     Luminaire luminaire(const Json& j, const Ptr& p);
+    /// The keys every light source may carry: group, maintenance_factor, ra.
+    SourceDesign source_design(const Json& j, const Ptr& p);
+    LuminousShape luminous_area(const Json& j, const Ptr& p);
+    Requirement requirement(const Json& j, const Ptr& p);
+    Observer observer(const Json& j, const Ptr& p);
+    LightScene light_scene(const Json& j, const Ptr& p);
+    std::optional<double> optional_number(const Json& j, const Ptr& p, const char* key) {
+        if (const Json* x = member(j, p, key, false)) return number(*x, p / key, key);
+        return std::nullopt;
+    }
     std::optional<PhotometricTable> photometry(const Json& j, const Ptr& p);
     SensorSet sensor(const Json& j, const Ptr& p, std::size_t index);
     Workplane workplane(const Json& j, const Ptr& p);
@@ -166,7 +176,8 @@ Scene SceneReader::read(const Json& root) {
     const Ptr p;
     check_keys(
         root, p,
-        {"format", "name", "units", "materials", "surfaces", "luminaires", "sensors", "settings"});
+        {"format", "name", "units", "materials", "surfaces", "luminaires", "sensors", "observers",
+         "light_scenes", "settings"});
     if (const Json* j = member(root, p, "format", true)) {
         if (!j->is_string() || j->get<std::string>() != kFormat) {
             report(p / "format", "format must be \"" + std::string(kFormat) + "\"");
@@ -212,6 +223,18 @@ Scene SceneReader::read(const Json& root) {
             scene.sensors.push_back(sensor((*j)[i], p / "sensors" / i, i));
         }
     }
+    if (const Json* j = member(root, p, "observers", false);
+        j && array(*j, p / "observers", "observers")) {
+        for (std::size_t i = 0; i < j->size(); ++i) {
+            scene.observers.push_back(observer((*j)[i], p / "observers" / i));
+        }
+    }
+    if (const Json* j = member(root, p, "light_scenes", false);
+        j && array(*j, p / "light_scenes", "light_scenes")) {
+        for (std::size_t i = 0; i < j->size(); ++i) {
+            scene.light_scenes.push_back(light_scene((*j)[i], p / "light_scenes" / i));
+        }
+    }
     if (const Json* j = member(root, p, "settings", false)) {
         scene.settings = settings(*j, p / "settings");
     }
@@ -246,7 +269,7 @@ Material SceneReader::material(const std::string& name, const Json& j, const Ptr
 
 std::optional<Emission> SceneReader::emission(const Json& j, const Ptr& p) {
     if (!object(j, p, "emission")) return std::nullopt;
-    check_keys(j, p, {"exitance", "flux", "color"});
+    check_keys(j, p, {"exitance", "flux", "color", "group", "maintenance_factor", "ra"});
     const bool exitance = j.contains("exitance"), flux = j.contains("flux");
     if (exitance == flux) {
         report(p, "emission needs exactly one of exitance or flux");
@@ -257,7 +280,16 @@ std::optional<Emission> SceneReader::emission(const Json& j, const Ptr& p) {
     const char* key = flux ? "flux" : "exitance";
     e.value = number(j[key], p / key, key);
     if (const Json* c = member(j, p, "color", false)) e.color = rgb(*c, p / "color", "color");
+    e.design = source_design(j, p);
     return e;
+}
+
+SourceDesign SceneReader::source_design(const Json& j, const Ptr& p) {
+    SourceDesign d;
+    if (const Json* g = member(j, p, "group", false)) d.group = string(*g, p / "group", "group");
+    d.maintenance_factor = optional_number(j, p, "maintenance_factor");
+    d.ra = optional_number(j, p, "ra");
+    return d;
 }
 
 /// A surface that imports a model becomes one engine surface per material of the model. A model
@@ -384,7 +416,9 @@ BoxGeometry SceneReader::box(const Json& j, const Ptr& p) {
 Luminaire SceneReader::luminaire(const Json& j, const Ptr& p) {
     Luminaire l;
     if (!object(j, p, "a luminaire")) return l;
-    check_keys(j, p, {"name", "position", "flux", "distribution", "aim", "rotation", "color"});
+    check_keys(j, p,
+               {"name", "position", "flux", "distribution", "aim", "rotation", "color", "group",
+                "maintenance_factor", "ra", "luminous_area"});
     if (const Json* n = member(j, p, "name", true)) l.name = string(*n, p / "name", "name");
     if (const Json* v = member(j, p, "position", true))
         l.position = vec3(*v, p / "position", "position");
@@ -408,7 +442,35 @@ Luminaire SceneReader::luminaire(const Json& j, const Ptr& p) {
         l.rotation_deg = number(*r, p / "rotation", "rotation");
     }
     if (const Json* c = member(j, p, "color", false)) l.color = rgb(*c, p / "color", "color");
+    l.design = source_design(j, p);
+    if (const Json* a = member(j, p, "luminous_area", false)) {
+        l.luminous_area = luminous_area(*a, p / "luminous_area");
+    }
     return l;
+}
+
+/// {"length", "width"} (a rectangle, length along C0) or {"diameter"} (a disc), each with an
+/// optional "height" of luminous sides.
+LuminousShape SceneReader::luminous_area(const Json& j, const Ptr& p) {
+    LuminousShape shape;
+    if (!object(j, p, "luminous_area")) return shape;
+    check_keys(j, p, {"length", "width", "diameter", "height"});
+    const bool disc = j.contains("diameter");
+    if (disc == (j.contains("length") || j.contains("width"))) {
+        report(p, "luminous_area needs length and width, or diameter");
+        return shape;
+    }
+    if (disc) {
+        shape.round = true;
+        shape.length = shape.width = number(j["diameter"], p / "diameter", "diameter");
+    } else {
+        if (const Json* x = member(j, p, "length", true))
+            shape.length = number(*x, p / "length", "length");
+        if (const Json* x = member(j, p, "width", true))
+            shape.width = number(*x, p / "width", "width");
+    }
+    shape.height = optional_number(j, p, "height").value_or(0);
+    return shape;
 }
 
 std::optional<PhotometricTable> SceneReader::photometry(const Json& j, const Ptr& p) {
@@ -448,7 +510,7 @@ std::optional<PhotometricTable> SceneReader::photometry(const Json& j, const Ptr
 SensorSet SceneReader::sensor(const Json& j, const Ptr& p, std::size_t index) {
     SensorSet s;
     if (!object(j, p, "a sensor set")) return s;
-    check_keys(j, p, {"name", "normal", "points", "grid", "workplane"});
+    check_keys(j, p, {"name", "normal", "points", "grid", "workplane", "kind", "requirement"});
     if (const Json* n = member(j, p, "name", true)) s.name = string(*n, p / "name", "name");
     // A work plane faces up unless told otherwise.
     if (const Json* n = member(j, p, "normal", !j.contains("workplane"))) {
@@ -463,8 +525,71 @@ SensorSet SceneReader::sensor(const Json& j, const Ptr& p, std::size_t index) {
     } else if (j.contains("grid")) {
         grid_sensors_.insert(index);
         s.points = grid(j["grid"], p / "grid");
+        if (j["grid"].is_object() && !s.points.empty()) {
+            const Json& g = j["grid"];
+            s.grid_area = GridArea{vec3(g["origin"], p / "grid" / "origin", "origin"),
+                                   vec3(g["u"], p / "grid" / "u", "u"),
+                                   vec3(g["v"], p / "grid" / "v", "v")};
+        }
     } else {
         s.workplane = workplane(j["workplane"], p / "workplane");
+    }
+    if (const Json* k = member(j, p, "kind", false)) {
+        static const std::pair<const char*, SensorKind> sensor_kinds[] = {
+            {"planar", SensorKind::planar},
+            {"vertical", SensorKind::vertical},
+            {"cylindrical", SensorKind::cylindrical},
+            {"semi-cylindrical", SensorKind::semi_cylindrical}};
+        const auto it = std::find_if(std::begin(sensor_kinds), std::end(sensor_kinds),
+                                     [&](const auto& x) { return *k == x.first; });
+        if (it == std::end(sensor_kinds)) {
+            report(p / "kind",
+                   "kind must be one of planar, vertical, cylindrical, semi-cylindrical");
+        } else {
+            s.kind = it->second;
+        }
+    }
+    if (const Json* r = member(j, p, "requirement", false)) {
+        s.requirement = requirement(*r, p / "requirement");
+    }
+    return s;
+}
+
+Requirement SceneReader::requirement(const Json& j, const Ptr& p) {
+    Requirement r;
+    if (!object(j, p, "requirement")) return r;
+    check_keys(j, p, {"activity", "em_lx", "u0", "ugr_l", "ra"});
+    if (const Json* a = member(j, p, "activity", false))
+        r.activity = string(*a, p / "activity", "activity");
+    r.em_lx = optional_number(j, p, "em_lx");
+    r.u0 = optional_number(j, p, "u0");
+    r.ugr_l = optional_number(j, p, "ugr_l");
+    r.ra = optional_number(j, p, "ra");
+    return r;
+}
+
+Observer SceneReader::observer(const Json& j, const Ptr& p) {
+    Observer o;
+    if (!object(j, p, "an observer")) return o;
+    check_keys(j, p, {"name", "position", "view", "task"});
+    if (const Json* n = member(j, p, "name", true)) o.name = string(*n, p / "name", "name");
+    if (const Json* x = member(j, p, "position", true))
+        o.position = vec3(*x, p / "position", "position");
+    if (const Json* x = member(j, p, "view", true)) o.view = vec3(*x, p / "view", "view");
+    if (const Json* t = member(j, p, "task", false)) o.task = string(*t, p / "task", "task");
+    return o;
+}
+
+LightScene SceneReader::light_scene(const Json& j, const Ptr& p) {
+    LightScene s;
+    if (!object(j, p, "a light scene")) return s;
+    check_keys(j, p, {"name", "dimming"});
+    if (const Json* n = member(j, p, "name", true)) s.name = string(*n, p / "name", "name");
+    if (const Json* d = member(j, p, "dimming", true); d && object(*d, p / "dimming", "dimming")) {
+        for (const auto& item : d->items()) {
+            s.dimming.emplace_back(item.key(),
+                                   number(item.value(), p / "dimming" / item.key(), "a dimming"));
+        }
     }
     return s;
 }
@@ -520,7 +645,8 @@ std::vector<Vec3> SceneReader::grid(const Json& j, const Ptr& p) {
 Settings SceneReader::settings(const Json& j, const Ptr& p) {
     Settings s;
     if (!object(j, p, "settings")) return s;
-    check_keys(j, p, {"tolerance", "max_seconds", "method"});
+    check_keys(j, p, {"tolerance", "max_seconds", "method", "maintenance_factor"});
+    s.maintenance_factor = optional_number(j, p, "maintenance_factor");
     if (const Json* t = member(j, p, "tolerance", false)) {
         s.tolerance = number(*t, p / "tolerance", "tolerance");
     }
@@ -610,8 +736,9 @@ ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits,
         if (reader.broken_.contains(entity_of(p.pointer))) continue;
         outcome.problems.push_back(std::move(p));
     }
-    // Work planes need the checked floors.
+    // Work planes need the checked floors; task areas their grids.
     if (outcome.problems.empty()) outcome.problems = expand_workplanes(scene, limits.scene);
+    if (outcome.problems.empty()) outcome.problems = expand_task_areas(scene, limits.scene);
     if (outcome.problems.empty()) outcome.scene = std::move(scene);
     return outcome;
 }

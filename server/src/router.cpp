@@ -129,6 +129,10 @@ RouteResult Router::dispatch(const Request& request) {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
         return {handlers::get_result_glb(ctx_, request, id), std::nullopt};
     }
+    if (parts.size() == 4 && parts[3] == "scenes") {
+        if (method != http::verb::post) return {method_not_allowed(request, "POST"), std::nullopt};
+        return {handlers::post_light_scene(ctx_, request, id), std::nullopt};
+    }
     if (parts.size() == 4 && parts[3] == "events") {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
         if (!ctx_.jobs.find(id)) return {handlers::get_job(ctx_, request, id), std::nullopt};

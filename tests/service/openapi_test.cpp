@@ -112,6 +112,26 @@ TEST(OpenApi, EveryAnswerMatchesTheSpec) {
     // The queue holds one job: let this one finish before filling it on purpose below.
     ASSERT_EQ(wait_for(d.port(), json::parse(keyed.body)["id"], "done"), "done");
 
+    // A light scene from a finished job's groups; a job without groups cannot give one.
+    const std::string scenes = "/v1/jobs/{id}/scenes";
+    const Reply grouped = rec.call(verb::post, jobs, jobs, radiant::test::grouped_room());
+    ASSERT_EQ(grouped.status, 202u);
+    const std::string lit = json::parse(grouped.body)["id"];
+    ASSERT_EQ(wait_for(d.port(), lit, "done"), "done");
+    EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + lit + "/result").status, 200u);
+    EXPECT_EQ(rec.call(verb::post, scenes, jobs + "/" + lit + "/scenes",
+                       R"({"name": "dim", "dimming": {"panel": 0.5, "down": 1}})")
+                  .status,
+              200u);
+    EXPECT_EQ(rec.call(verb::post, scenes, jobs + "/" + lit + "/scenes",
+                       R"({"name": "x", "dimming": {"nope": 1}})")
+                  .status,
+              400u);
+    EXPECT_EQ(rec.call(verb::post, scenes, jobs + "/" + done + "/scenes",
+                       R"({"name": "x", "dimming": {}})")
+                  .status,
+              409u);
+
     // A running job, one queued behind it, and a full queue.
     const std::string running =
         json::parse(rec.call(verb::post, jobs, jobs, radiant::test::slow_room()).body)["id"];
@@ -148,6 +168,10 @@ TEST(OpenApi, EveryAnswerMatchesTheSpec) {
     EXPECT_EQ(rec.call(verb::get, result, unknown + "/result").status, 404u);
     EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + done + "/result?include=nope").status, 400u);
     EXPECT_EQ(rec.call(verb::get, events, unknown + "/events").status, 404u);
+    EXPECT_EQ(rec.call(verb::post, "/v1/jobs/{id}/scenes", unknown + "/scenes",
+                       R"({"name": "x", "dimming": {}})")
+                  .status,
+              404u);
     EXPECT_EQ(rec.call(verb::get, "/healthz", "/healthz").status, 200u);
     EXPECT_EQ(rec.call(verb::get, "/metrics", "/metrics").status, 200u);
 

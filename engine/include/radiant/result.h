@@ -54,13 +54,99 @@ struct SolveStats {
     std::vector<StageStats> stages;
 };
 
+/// A sensor set's values before maintenance (the light of new lamps and clean luminaires).
+struct InitialValues {
+    std::vector<double> illuminance;  ///< lux, in the order of the points
+    double min = 0, max = 0, average = 0, u0 = 0;
+};
+
+/// One criterion of a requirement, checked: `value` against `required`.
+struct Check {
+    enum class Status { pass, fail, unknown };
+    std::string criterion;  ///< "em_lx", "u0", "ugr_l" or "ra"
+    double required = 0;
+    double value = 0;  ///< Ē (maintained), U₀, the largest UGR, the smallest Ra
+    Status status = Status::unknown;
+    std::string observer;  ///< ugr_l: the observer with the largest UGR
+    std::string note;      ///< why a check is `unknown`
+};
+
+/// A requirement as applied: the values in force and where they came from.
+struct AppliedRequirement {
+    std::string source;  ///< "scene", "table" (an activity) or "surrounding" (EN 12464-1 Table 1)
+    std::string activity;  ///< reference number and name, when from the table
+    std::optional<double> em_lx, u0, ugr_l, ra;
+};
+
+struct Compliance {
+    Check::Status status = Check::Status::unknown;  ///< fail if any fails, else unknown if any is
+    AppliedRequirement requirement;
+    std::vector<Check> checks;
+};
+
 struct SensorResult {
     std::string name;
-    std::vector<double> illuminance;                       ///< lux, in the order of the points
+    std::vector<double> illuminance;  ///< lux, in the order of the points; maintained values
     double min = 0, max = 0, average = 0, uniformity = 0;  ///< uniformity = min / average
     double u0 = 0;                   ///< EN 12464-1 U₀ = min / average (the same as `uniformity`)
     double ud = 0;                   ///< U_d = min / max
     std::optional<SensorGrid> grid;  ///< work planes: the grid, in metres
+    SensorKind kind = SensorKind::planar;
+    /// The values without maintenance; set when a maintenance factor below 1 applies.
+    std::optional<InitialValues> initial;
+    std::optional<std::string> surrounding_of;  ///< a band: the name of its task area
+    std::optional<Compliance> compliance;       ///< sets with a requirement
+    double error_estimate = 0;  ///< this set's relative RMS error (light scenes; 0 if unknown)
+};
+
+/// A UGR observer's result (CIE 117), for the light of new lamps (initial values).
+struct ObserverResult {
+    std::string name;
+    Vec3 position;  ///< the eye, metres
+    Vec3 view;      ///< unit line of sight
+    std::optional<std::string> task;
+    bool standard = false;
+    /// 8·log10(0.25/L_b · Σ L²ω/p²); 0 when no luminaire is in view, never below 0.
+    double ugr = 0;
+    double background_luminance = 0;  ///< L_b = E_ind / π, cd/m²
+    double glare_sum = 0;             ///< Σ L²ω/p² over the luminaires in view, cd²/m⁴·sr
+    /// How far the UGR may be off through its background's estimated error, UGR units.
+    double ugr_error_estimate = 0;
+};
+
+/// Which maintenance factor applied to how many sources.
+struct MaintenanceUse {
+    double factor = 1;
+    std::string from;  ///< "luminaire", "material", "settings" or "default"
+    std::size_t luminaires = 0, materials = 0;
+};
+
+/// One group's contribution at full output: what light scenes are sums of.
+struct GroupContribution {
+    struct Sensors {
+        std::string name;
+        std::vector<double> illuminance;          ///< maintained, lux
+        std::vector<double> initial_illuminance;  ///< lux
+        double error_lx = 0;  ///< estimated RMS error of the maintained values, lux
+    };
+    struct Glare {
+        std::string name;
+        double background_luminance = 0;  ///< cd/m², initial
+        double glare_sum = 0;             ///< Σ L²ω/p² of its luminaires, initial
+        double background_error = 0;      ///< estimated error of the background luminance
+    };
+    std::string name;
+    std::vector<Sensors> sensors;  ///< in the order of Result::sensors
+    std::vector<Glare> observers;  ///< in the order of Result::observers
+    std::optional<double> ra;      ///< the smallest Ra of its sources; none if one lacks it
+};
+
+struct LightSceneResult {
+    std::string name;
+    std::vector<std::pair<std::string, double>> dimming;
+    std::vector<SensorResult> sensors;
+    std::vector<ObserverResult> observers;
+    double error_estimate = 0;  ///< worst sensor set, from the groups' estimates
 };
 
 struct SurfaceResult {
@@ -88,8 +174,15 @@ struct Result {
     std::vector<SensorResult> sensors;
     std::vector<SurfaceResult> surfaces;
     std::optional<SolvedMesh> mesh;
+    std::vector<MaintenanceUse> maintenance;
+    std::vector<ObserverResult> observers;
+    /// Every group's contribution, when the scene names groups or light scenes.
+    std::vector<GroupContribution> groups;
+    std::vector<LightSceneResult> light_scenes;
 };
 
 const char* to_string(SolveStatus status);
+const char* to_string(Check::Status status);
+const char* to_string(SensorKind kind);
 
 }  // namespace radiant

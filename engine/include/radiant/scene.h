@@ -22,11 +22,22 @@ double meters_per_unit(LengthUnit unit);
 /// Linear RGB triple; gray values are stored as three equal channels.
 using Rgb = std::array<double, 3>;
 
+/// What a lighting designer attaches to every light source (luminaire or emitting material).
+struct SourceDesign {
+    /// The light scene group it switches and dims with; sources without one are in "default".
+    std::optional<std::string> group;
+    /// Light output at the end of the maintenance cycle over the initial output, in (0, 1];
+    /// `settings.maintenance_factor`, else 1, when not given.
+    std::optional<double> maintenance_factor;
+    std::optional<double> ra;  ///< colour rendering index of its lamps, [0, 100]
+};
+
 struct Emission {
     enum class Kind { exitance, flux };
     Kind kind = Kind::exitance;
     double value = 0;  ///< lm/m² for `exitance`, lm for `flux` (spread over all area using it)
     std::optional<Rgb> color;  ///< relative colour; normalised so that its luminance is 1
+    SourceDesign design;
 };
 
 struct Material {
@@ -69,6 +80,9 @@ struct Luminaire {
     double rotation_deg = 0;  ///< photometric: turns the C0 plane about `aim`, like increasing C
     std::optional<PhotometricTable> photometry;  ///< set for Distribution::photometric
     std::optional<Rgb> color;
+    SourceDesign design;
+    /// The luminous opening for glare (scene units); overrides the photometric file's.
+    std::optional<LuminousShape> luminous_area;
 };
 
 /// An EN 12464-1 work plane: a grid over named floor surfaces (their upward-facing horizontal
@@ -90,18 +104,63 @@ struct SensorGrid {
     std::vector<Vec3> points;               ///< the points (scene units; metres in a result)
 };
 
+/// What a sensor measures at its point (z is up): illuminance on a tiny disc facing `normal`
+/// (planar), on a vertical disc facing the horizontal part of `normal` (vertical), or averaged
+/// over the curved side of a tiny upright cylinder (cylindrical) or of its half facing the
+/// horizontal part of `normal` (semi-cylindrical).
+enum class SensorKind { planar, vertical, cylindrical, semi_cylindrical };
+
+/// An EN 12464-1 requirement of a task area. `activity` names a row of the built-in table
+/// (reference numbers such as "5.26.2"), whose values fill the criteria not given here.
+struct Requirement {
+    std::optional<std::string> activity;
+    std::optional<double> em_lx;  ///< maintained average illuminance Ēm at least this (lux)
+    std::optional<double> u0;     ///< uniformity U₀ = E_min / Ē at least this
+    std::optional<double> ugr_l;  ///< unified glare rating at most this (UGR_L)
+    std::optional<double> ra;     ///< colour rendering index of the lamps at least this
+};
+
+/// The parallelogram origin + [0,1]·u + [0,1]·v a `grid` covers (scene units).
+struct GridArea {
+    Vec3 origin, u, v;
+};
+
 struct SensorSet {
     std::string name;
     std::vector<Vec3> points;  ///< grids are expanded to their cell centres, row-major, u fastest
     Vec3 normal{0, 0, 1};
+    SensorKind kind = SensorKind::planar;
     std::optional<Workplane> workplane;  ///< points come from expand_workplanes()
     std::optional<SensorGrid> grid;      ///< set by expand_workplanes()
+    std::optional<GridArea> grid_area;   ///< a `grid` set's area (set by the JSON reader)
+    std::optional<Requirement> requirement;
+    /// Set by expand_task_areas() on the immediate surrounding band it adds: the task area's
+    /// index among the sensor sets.
+    std::optional<std::size_t> surrounding_of;
+};
+
+/// A UGR observer: the eye's position (scene units) and the line of sight.
+struct Observer {
+    std::string name;
+    Vec3 position;
+    Vec3 view{1, 0, 0};
+    /// The task area whose `ugr_l` this observer checks (a sensor set name); none: every one
+    /// that has no observer of its own.
+    std::optional<std::string> task;
+    bool standard = false;  ///< placed by expand_task_areas() at the standard positions
+};
+
+/// A light scene: every group's dimming in [0, 1]; groups it does not name are off.
+struct LightScene {
+    std::string name;
+    std::vector<std::pair<std::string, double>> dimming;
 };
 
 struct Settings {
     double tolerance = 0.01;  ///< target relative error of the solve
     std::optional<double> max_seconds;
     std::string method = "auto";
+    std::optional<double> maintenance_factor;  ///< of every source that sets none; default 1
 };
 
 struct Scene {
@@ -111,6 +170,8 @@ struct Scene {
     std::vector<Surface> surfaces;
     std::vector<Luminaire> luminaires;
     std::vector<SensorSet> sensors;
+    std::vector<Observer> observers;
+    std::vector<LightScene> light_scenes;
     Settings settings;
 };
 
@@ -136,5 +197,12 @@ std::vector<Problem> check_scene(const Scene& scene, const SceneLimits& limits =
 /// Problems (a floor without an upward-facing horizontal face, no point left, too many points)
 /// point at the sensor set. Thread-safe for distinct scenes.
 std::vector<Problem> expand_workplanes(Scene& scene, const SceneLimits& limits = {});
+
+/// For every sensor set with a requirement (after expand_workplanes()): appends its immediate
+/// surrounding band (EN 12464-1: 0.5 m wide, its own grid, the standard's lower requirement) as
+/// a sensor set, and, where a requirement limits UGR and no observer checks it, the standard
+/// observers at the middle of each side of the band's outline (eye 1.2 m above the floor,
+/// looking across the area). Problems point at the sensor set. Thread-safe for distinct scenes.
+std::vector<Problem> expand_task_areas(Scene& scene, const SceneLimits& limits = {});
 
 }  // namespace radiant

@@ -43,12 +43,14 @@ Vec3 photometric_direction(const PreparedLuminaire& l, double gamma, double c) {
 
 }  // namespace
 
-LightSources::LightSources(const PreparedScene& scene, double ray_epsilon)
-    : scene_(scene), epsilon_(ray_epsilon) {
+LightSources::LightSources(const PreparedScene& scene, double ray_epsilon, int component)
+    : scene_(scene), epsilon_(ray_epsilon), component_(component) {
     tables_.resize(scene.luminaires.size());
     for (std::size_t i = 0; i < scene.luminaires.size(); ++i) {
         const PreparedLuminaire& l = scene.luminaires[i];
-        source_power_.push_back(luminance(l.flux_lm));
+        // Another component's luminaire keeps its index with no power: it is never drawn.
+        source_power_.push_back(included(i) ? luminance(l.flux_lm) : 0.0);
+        if (!included(i)) continue;
         if (l.distribution != Distribution::photometric) continue;
         // Each cell weighs the largest intensity at its centre and corners, so that no cell
         // with light is never drawn; the photon's weight corrects for the difference.
@@ -74,7 +76,7 @@ LightSources::LightSources(const PreparedScene& scene, double ray_epsilon)
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
         const Piece& p = scene.pieces[i];
         const PreparedMaterial& m = scene.materials[static_cast<std::size_t>(p.material)];
-        if (!m.emits()) continue;
+        if (!m.emits() || (component >= 0 && m.component != component)) continue;
         EmittingPiece e;
         e.piece = static_cast<int>(i);
         e.exitance = m.exitance_lm_m2;
@@ -158,12 +160,38 @@ Photon LightSources::emit(SampleStream& rng) const {
 
 Rgb LightSources::luminaire_part(std::size_t i, const Vec3& x, const Vec3& n,
                                  const Visibility& visibility, std::uint64_t& rays) const {
+    if (!included(i)) return {0, 0, 0};
     const PreparedLuminaire& l = scene_.luminaires[i];
     const double kernel = direct_kernel_per_lm(l, x, n);
     if (!(kernel > 0)) return {0, 0, 0};
     ++rays;
     if (!visibility.visible(x + n * epsilon_, l.position)) return {0, 0, 0};
     return scaled(l.flux_lm, kernel);
+}
+
+Rgb LightSources::luminaires_at(const Vec3& x, const SensorReceiver& receiver,
+                               const Visibility& visibility, std::uint64_t& rays) const {
+    Rgb sum{0, 0, 0};
+    const Vec3 from = x + receiver.offset_normal() * epsilon_;
+    for (std::size_t i = 0; i < scene_.luminaires.size(); ++i) {
+        if (!included(i)) continue;
+        const PreparedLuminaire& l = scene_.luminaires[i];
+        double kernel = 0;
+        if (receiver.fixed()) {
+            kernel = direct_kernel_per_lm(l, x, receiver.normal_at(0));
+        } else {
+            const Vec3 d = l.position - x;
+            const double d2 = length_squared(d);
+            if (!(d2 > 0)) continue;
+            const Vec3 w = d / std::sqrt(d2);
+            kernel = std::max(0.0, intensity_per_lm(l, -w)) * receiver.weight(w) / d2;
+        }
+        if (!(kernel > 0)) continue;
+        ++rays;
+        if (!visibility.visible(from, l.position)) continue;
+        add(sum, scaled(l.flux_lm, kernel));
+    }
+    return sum;
 }
 
 Rgb LightSources::piece_part(const EmittingPiece& e, const Vec3& x, const Vec3& n,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/random.h"
+#include "montecarlo/sensor_receiver.h"
 #include "scene/prepared_scene.h"
 #include "visibility/visibility.h"
 
@@ -22,7 +23,9 @@ struct Photon {
 
 class LightSources {
 public:
-    LightSources(const PreparedScene& scene, double ray_epsilon);
+    /// The scene's sources, or only those of one light component (`component` ≥ 0): a solve
+    /// that keeps components apart runs the light of each through the same mesh.
+    LightSources(const PreparedScene& scene, double ray_epsilon, int component = -1);
 
     bool empty() const { return total_power_ <= 0; }
 
@@ -37,6 +40,11 @@ public:
     /// could light x is never drawn. Counts rays into `rays`.
     Rgb direct_at(const Vec3& x, const Vec3& n, const Visibility& visibility, SampleStream& rng,
                   std::uint64_t& rays) const;
+
+    /// The luminaires' light at a sensor point as its kind counts it, exactly, with one shadow
+    /// ray per luminaire that could light it (lux, per channel).
+    Rgb luminaires_at(const Vec3& x, const SensorReceiver& receiver, const Visibility& visibility,
+                      std::uint64_t& rays) const;
 
     /// The emitting pieces' part of direct_at at a sensor, with `samples` visibility points per
     /// piece: irradiance of emitting surfaces only (lux, per channel).
@@ -66,8 +74,13 @@ private:
                    const Visibility& visibility, SampleStream& rng, int samples,
                    std::uint64_t& rays) const;
 
+    bool included(std::size_t luminaire) const {
+        return component_ < 0 || scene_.luminaires[luminaire].component == component_;
+    }
+
     const PreparedScene& scene_;
     double epsilon_;
+    int component_;
     std::vector<EmittingPiece> pieces_;
     std::vector<DirectionTable> tables_;  ///< per luminaire; empty cdf unless photometric
     /// Sources in one list (luminaires first, then emitting pieces) by photometric power.

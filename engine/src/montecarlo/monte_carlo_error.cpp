@@ -23,11 +23,12 @@ constexpr double kMinNoiseShare = 0.1;
 
 }  // namespace
 
-MonteCarloError combine_errors(const std::vector<GatheredPoint>& points,
-                               const std::vector<std::size_t>& set_sizes) {
-    MonteCarloError worst;
+std::vector<SetError> set_errors(const std::vector<GatheredPoint>& points,
+                                 const std::vector<std::size_t>& set_sizes) {
+    std::vector<SetError> out;
     std::size_t first = 0;
     for (const std::size_t size : set_sizes) {
+        SetError& set = out.emplace_back();
         double mean = 0, gather = 0, photon = 0, bias = 0;
         for (std::size_t i = first; i < first + size; ++i) {
             mean += points[i].illuminance;
@@ -39,14 +40,23 @@ MonteCarloError combine_errors(const std::vector<GatheredPoint>& points,
         if (size == 0 || !(mean > 0)) continue;
         const double n = static_cast<double>(size);
         mean /= n;
-        MonteCarloError e;
+        set.mean = mean;
+        MonteCarloError& e = set.error;
         e.parts.gather_noise = kGatherMargin * std::sqrt(gather / n) / mean;
         e.parts.photon_noise = kPhotonMargin * std::sqrt(photon / n) / mean;
         e.parts.discretisation = std::sqrt(std::max(0.0, bias) / n) / mean;
         e.total = std::sqrt(e.parts.gather_noise * e.parts.gather_noise +
                             e.parts.photon_noise * e.parts.photon_noise +
                             e.parts.discretisation * e.parts.discretisation);
-        if (!(e.total <= worst.total)) worst = e;
+    }
+    return out;
+}
+
+MonteCarloError combine_errors(const std::vector<GatheredPoint>& points,
+                               const std::vector<std::size_t>& set_sizes) {
+    MonteCarloError worst;
+    for (const SetError& set : set_errors(points, set_sizes)) {
+        if (set.mean > 0 && !(set.error.total <= worst.total)) worst = set.error;
     }
     return worst;
 }

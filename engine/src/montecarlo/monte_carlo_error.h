@@ -15,7 +15,16 @@ struct MonteCarloError {
     ErrorParts parts;  ///< of the worst set
 };
 
-/// The estimate from every point's error parts; `set_sizes` splits the points into sensor sets.
+/// The estimate of every sensor set (relative to its mean; 0 for a set without light), and
+/// its mean (lux); `set_sizes` splits the points into sensor sets.
+struct SetError {
+    MonteCarloError error;
+    double mean = 0;
+};
+std::vector<SetError> set_errors(const std::vector<GatheredPoint>& points,
+                                 const std::vector<std::size_t>& set_sizes);
+
+/// The estimate from every point's error parts: the worst set's.
 MonteCarloError combine_errors(const std::vector<GatheredPoint>& points,
                                const std::vector<std::size_t>& set_sizes);
 

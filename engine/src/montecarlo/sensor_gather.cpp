@@ -5,7 +5,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include "formfactor/luminaire_light.h"
 #include "geometry/cosine_direction.h"
 #include "solution/surface_summary.h"
 
@@ -16,7 +15,7 @@ constexpr int kStrata = 8;  // kStrata² = SensorGather::kRaysPerSet
 static_assert(kStrata * kStrata == SensorGather::kRaysPerSet);
 // Visibility points per emitting piece in each set at a sensor.
 constexpr int kPieceSamples = 4;
-constexpr std::uint64_t kSensorStream = 0x73656e736f72ull;
+constexpr std::uint64_t kSensorStream = 0x73656e736f72ull, kEyeStream = 0x657965ull;
 constexpr int kBatches = PhotonField::kBatches;
 
 double sample_variance_of_mean(const double* values, int n) {
@@ -33,10 +32,23 @@ double sample_variance_of_mean(const double* values, int n) {
 
 SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
                            const LightSources& sources, const Visibility& visibility,
-                           std::uint64_t seed)
-    : scene_(scene), mesh_(mesh), sources_(sources), visibility_(visibility), seed_(seed) {
+                           std::uint64_t seed, Points which)
+    : scene_(scene),
+      mesh_(mesh),
+      sources_(sources),
+      visibility_(visibility),
+      seed_(seed),
+      stream_(which == Points::sensors ? kSensorStream : kEyeStream) {
+    if (which == Points::eyes) {
+        for (const PreparedObserver& o : scene.observers) {
+            points_.push_back(
+                {o.position, SensorReceiver(SensorKind::planar, o.view), true, 0, {}, {}});
+        }
+        return;
+    }
     for (const PreparedSensorSet& set : scene.sensors) {
-        for (const Vec3& p : set.points) points_.push_back({p, set.normal, 0, {}, {}});
+        for (const Vec3& p : set.points)
+            points_.push_back({p, SensorReceiver(set.kind, set.normal), false, 0, {}, {}});
     }
 }
 
@@ -52,23 +64,33 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
     const int channels = scene_.channels;
     const double eps = visibility_.epsilon();
     const double t_max = 4 * scene_.diagonal_m + 1;
-    const Vec3 origin = point.position + point.normal * eps;
-    if (point.set_direct.empty()) {
-        point.luminaires = photometric(
-            luminaire_irradiance_at(scene_, visibility_, point.position, point.normal, rays),
-            channels);
+    const SensorReceiver& receiver = point.receiver;
+    const bool fixed = receiver.fixed();
+    const Vec3 fixed_normal = receiver.normal_at(0);
+    if (point.set_direct.empty() && !point.background) {
+        point.luminaires =
+            photometric(sources_.luminaires_at(point.position, receiver, visibility_, rays),
+                        channels);
     }
     for (int set = static_cast<int>(point.set_direct.size()); set < sets; ++set) {
-        SampleStream rng(seed_, kSensorStream, index, static_cast<std::uint64_t>(set));
-        double direct =
-            photometric(sources_.emitting_pieces_at(point.position, point.normal, visibility_, rng,
-                                                    kPieceSamples, rays),
-                        channels);
+        SampleStream rng(seed_, stream_, index, static_cast<std::uint64_t>(set));
+        // A kind that averages receiver normals draws the emitting surfaces' one per set, and
+        // one per ray in strata turned by a random offset (any offset covers every stratum).
+        const Vec3 set_normal = fixed ? fixed_normal : receiver.normal_at(rng.next());
+        const int offset = fixed ? 0 : static_cast<int>(rng.next() * kRaysPerSet);
+        double direct = photometric(sources_.emitting_pieces_at(point.position, set_normal,
+                                                                visibility_, rng, kPieceSamples,
+                                                                rays),
+                                    channels);
         double reflected = 0;
         for (int k = 0; k < kRaysPerSet; ++k) {
+            const Vec3 normal =
+                fixed ? fixed_normal
+                      : receiver.normal_at(((k + offset) % kRaysPerSet + rng.next()) / kRaysPerSet);
+            const Vec3 origin = point.position + normal * eps;
             const double r1 = (k / kStrata + rng.next()) / kStrata;
             const double r2 = (k % kStrata + rng.next()) / kStrata;
-            const Vec3 d = cosine_direction(point.normal, r1, r2);
+            const Vec3 d = cosine_direction(normal, r1, r2);
             ++rays;
             const RayHit hit = visibility_.intersect(origin, d, t_max);
             const int side = hit.triangle < 0 ? -1 : mesh_.side_hit(hit.triangle, d);

@@ -38,8 +38,14 @@ class SensorGather {
 public:
     static constexpr int kRaysPerSet = 64;  ///< 8 × 8 strata of the cosine-weighted hemisphere
 
+    /// What a gather measures: the sensor points, in the order of the sets; or the UGR
+    /// observers' eyes, each facing its line of sight and gathering all light but the
+    /// luminaires' (their glare is rated apart; what remains is the background, E_ind = π L_b).
+    enum class Points { sensors, eyes };
+
     SensorGather(const PreparedScene& scene, const ElementMesh& mesh, const LightSources& sources,
-                 const Visibility& visibility, std::uint64_t seed);
+                 const Visibility& visibility, std::uint64_t seed,
+                 Points which = Points::sensors);
 
     /// Casts ray sets until every point has `sets` of them; the exact luminaire light comes with
     /// the first. Returns the rays cast. Parallel over points; deterministic.
@@ -55,7 +61,8 @@ public:
 private:
     struct Point {
         Vec3 position;
-        Vec3 normal;
+        SensorReceiver receiver;
+        bool background = false;  ///< an observer's eye: no luminaire light
         double luminaires = 0;           ///< photometric, exact
         std::vector<double> set_direct;  ///< per set: emitting pieces + mean ρ ⊙ E_direct(hit)
         std::vector<int> hits;           ///< per ray, set by set: the side it landed on, or −1
@@ -67,6 +74,7 @@ private:
     const LightSources& sources_;
     const Visibility& visibility_;
     std::uint64_t seed_;
+    std::uint64_t stream_;  ///< keys the points' samples: the eyes' apart from the sensors'
     std::vector<Point> points_;
     int sets_ = 0;
 };

@@ -7,6 +7,8 @@
 #include "photometry/intensity_table.h"
 #include "radiant/box.h"
 #include "radiant/scene.h"
+#include "scene/check_lighting_design.h"
+#include "scene/json_pointer.h"
 
 namespace radiant {
 namespace {
@@ -14,25 +16,6 @@ namespace {
 // Relative tolerances: scenes come in any unit, so absolute thresholds would be wrong somewhere.
 constexpr double kZeroAreaTolerance = 1e-12;  ///< area / (bounding-box diagonal)²
 constexpr double kPlanarityTolerance = 1e-3;  ///< distance from the plane / polygon size
-
-/// RFC 6901 escaping of one reference token (material names are user text).
-std::string escape_token(const std::string& token) {
-    std::string out;
-    for (const char c : token) {
-        if (c == '~') {
-            out += "~0";
-        } else if (c == '/') {
-            out += "~1";
-        } else {
-            out += c;
-        }
-    }
-    return out;
-}
-
-std::string at(const std::string& base, std::size_t index) {
-    return base + "/" + std::to_string(index);
-}
 
 class Checker {
 public:
@@ -299,6 +282,7 @@ std::vector<Problem> check_scene(const Scene& scene, const SceneLimits& limits) 
     check_luminaires(scene, check);
     check_sensors(scene, check);
     check_settings(scene.settings, check);
+    check_lighting_design(scene, problems);
     return problems;
 }
 

@@ -160,6 +160,7 @@ PreparedScene prepare_scene(const Scene& scene) {
         }
     }
 
+    out.components = light_components(scene);
     bool gray = true;
     for (const Material& m : scene.materials) {
         gray = gray && is_gray(m.reflectance);
@@ -174,6 +175,7 @@ PreparedScene prepare_scene(const Scene& scene) {
         pm.name = m.name;
         pm.reflectance = m.reflectance;
         pm.two_sided = m.two_sided;
+        pm.component = std::max(0, out.components.material_component[i]);
         if (m.emission && m.emission->value > 0) {
             double exitance = m.emission->value;
             if (m.emission->kind == Emission::Kind::flux) {
@@ -186,9 +188,11 @@ PreparedScene prepare_scene(const Scene& scene) {
     }
 
     const double s = meters_per_unit(scene.units);
-    for (const Luminaire& l : scene.luminaires) {
+    for (std::size_t i = 0; i < scene.luminaires.size(); ++i) {
+        const Luminaire& l = scene.luminaires[i];
         PreparedLuminaire pl;
         pl.name = l.name;
+        pl.component = out.components.luminaire_component[i];
         pl.position = l.position * s - out.world_origin;
         const Rgb c = normalized_color(l.color);
         pl.distribution = l.distribution;
@@ -199,6 +203,17 @@ PreparedScene prepare_scene(const Scene& scene) {
             flux_lm = l.flux_lm.value_or(pl.table->flux_lm());
             pl.c0_axis = c0_axis(pl.aim, l.rotation_deg);
             pl.c90_axis = cross(pl.c0_axis, pl.aim);
+            pl.luminous = l.photometry->luminous;
+        } else {
+            // The C0 axis of a table-less luminaire still orients its luminous area.
+            pl.c0_axis = c0_axis(pl.aim, l.rotation_deg);
+            pl.c90_axis = cross(pl.c0_axis, pl.aim);
+        }
+        if (l.luminous_area) {
+            pl.luminous = *l.luminous_area;
+            pl.luminous.length *= s;
+            pl.luminous.width *= s;
+            pl.luminous.height *= s;
         }
         for (int k = 0; k < 3; ++k) pl.flux_lm[k] = flux_lm * c[k];
         out.luminaires.push_back(std::move(pl));
@@ -207,10 +222,16 @@ PreparedScene prepare_scene(const Scene& scene) {
         PreparedSensorSet ps;
         ps.name = set.name;
         for (const Vec3& p : set.points) ps.points.push_back(p * s - out.world_origin);
+        ps.kind = set.kind;
         ps.normal = normalized(set.normal);
+        // The vertical kinds face the horizontal part of the normal.
+        if (set.kind == SensorKind::vertical || set.kind == SensorKind::semi_cylindrical)
+            ps.normal = normalized(Vec3{set.normal.x, set.normal.y, 0});
         if (set.grid) ps.grid = grid_in_meters(*set.grid, s);
         out.sensors.push_back(std::move(ps));
     }
+    for (const Observer& o : scene.observers)
+        out.observers.push_back({o.name, o.position * s - out.world_origin, normalized(o.view)});
     return out;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "design/light_components.h"
 #include "photometry/intensity_table.h"
 #include "radiant/scene.h"
 
@@ -19,6 +20,7 @@ struct PreparedMaterial {
     Rgb reflectance{0, 0, 0};
     Rgb exitance_lm_m2{0, 0, 0};  ///< front side only
     bool two_sided = false;
+    int component = 0;  ///< the light component its emission belongs to
     bool emits() const {
         return exitance_lm_m2[0] > 0 || exitance_lm_m2[1] > 0 || exitance_lm_m2[2] > 0;
     }
@@ -43,13 +45,24 @@ struct PreparedLuminaire {
     /// of the C0 and C90 planes, both perpendicular to `aim`.
     std::shared_ptr<const IntensityTable> table;
     Vec3 c0_axis, c90_axis;
+    int component = 0;  ///< the light component it belongs to
+    /// The luminous opening (metres), for glare; a point when neither the scene nor the file
+    /// gives one.
+    LuminousShape luminous;
 };
 
 struct PreparedSensorSet {
     std::string name;
     std::vector<Vec3> points;        ///< local frame
-    Vec3 normal;                     ///< unit
+    Vec3 normal;                     ///< unit; vertical kinds: horizontal, the facing
+    SensorKind kind = SensorKind::planar;
     std::optional<SensorGrid> grid;  ///< work planes: world frame, metres
+};
+
+struct PreparedObserver {
+    std::string name;
+    Vec3 position;  ///< the eye, local frame
+    Vec3 view;      ///< unit line of sight
 };
 
 struct PreparedScene {
@@ -64,6 +77,9 @@ struct PreparedScene {
     std::vector<Piece> pieces;
     std::vector<PreparedLuminaire> luminaires;
     std::vector<PreparedSensorSet> sensors;
+    std::vector<PreparedObserver> observers;
+    /// Groups and maintenance factors: the components a solve keeps apart.
+    LightComponents components;
 };
 
 /// Converts a scene that passed check_scene(). Degenerate pieces (zero area) are dropped.

@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
+#include "design/glare.h"
+#include "design/lighting_assembly.h"
 #include "montecarlo/element_mesh.h"
 #include "montecarlo/light_sources.h"
 #include "montecarlo/monte_carlo_error.h"
@@ -36,42 +39,144 @@ constexpr double kRefinementRatio = 0.5;
 constexpr int kMaxRefinements = 3;
 // Mesh versions: one per level of elements.
 constexpr std::uint64_t kFirstMeshVersion = 1;
+// An observer's background luminance moves its UGR by 8·log10(1 + δ) when off by δ: it is held
+// to the δ that moves UGR by this much (5.9 %), or to the tolerance where that is finer. UGR
+// is read in whole units; its light, all reflected, would otherwise cost ten times the photons.
+constexpr double kUgrErrorTarget = 0.2;
+
+// One light component's light through a level's mesh: its sources, its photons, and the
+// gathers at its sensors and at the observers' eyes, each to its own budget (a scene without
+// groups has one component, of every source). The eyes are few and need their own number of
+// ray sets: their light is all reflected, noisier than a sensor's.
+struct ComponentLight {
+    ComponentLight(const PreparedScene& scene, const ElementMesh& mesh, const Visibility& visibility,
+                   int which, double factor, std::uint64_t seed)
+        : sources(scene, visibility.epsilon(), which),
+          field(scene, mesh, seed),
+          gather(scene, mesh, sources, visibility, seed),
+          eyes(scene, mesh, sources, visibility, seed, SensorGather::Points::eyes),
+          component(which),
+          maintenance_factor(factor) {}
+    LightSources sources;
+    PhotonField field;
+    SensorGather gather, eyes;
+    int component;  ///< −1: every source
+    double maintenance_factor;
+    SampleBudget budget{0, kInitialSets};
+    int eye_sets = kInitialSets;
+    MonteCarloError error, eye_error;  ///< the eyes': scaled to the tolerance
+    std::vector<SetError> set_errors, eye_errors;
+    std::vector<GatheredPoint> points, eye_points;
+    double reported = std::numeric_limits<double>::infinity();
+    double eye_reported = std::numeric_limits<double>::infinity();
+    bool complete() const {
+        return field.photons() >= budget.photons && gather.sets() >= budget.sets &&
+               eyes.sets() >= eye_sets;
+    }
+};
 
 // One level of elements with everything that refers to them.
 struct MonteCarloLevel {
     MonteCarloLevel(const PreparedScene& scene, double edge, std::uint64_t seed)
-        : mesh(scene, edge),
-          visibility(make_embree_visibility(mesh.triangles())),
-          sources(scene, visibility->epsilon()),
-          field(scene, mesh, seed),
-          gather(scene, mesh, sources, *visibility, seed) {}
+        : mesh(scene, edge), visibility(make_embree_visibility(mesh.triangles())) {
+        const std::vector<LightComponent>& components = scene.components.components;
+        if (components.size() <= 1) {
+            const double mf = components.empty() ? 1.0 : components.front().maintenance_factor;
+            lights.push_back(std::make_unique<ComponentLight>(scene, mesh, *visibility, -1, mf, seed));
+            return;
+        }
+        for (std::size_t c = 0; c < components.size(); ++c) {
+            lights.push_back(std::make_unique<ComponentLight>(
+                scene, mesh, *visibility, static_cast<int>(c), components[c].maintenance_factor,
+                seed));
+        }
+    }
     ElementMesh mesh;
     std::unique_ptr<Visibility> visibility;
-    LightSources sources;
-    PhotonField field;
-    SensorGather gather;
+    std::vector<std::unique_ptr<ComponentLight>> lights;
 };
 
 Rgb times(const Rgb& a, const Rgb& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
 // Every element side as the surface summaries need it: irradiance from all photons, radiosity
-// emitted (front) plus reflected.
+// emitted (front) plus reflected; maintained, each component times its factor.
 std::vector<SolvedElement> solved_sides(const PreparedScene& scene, const ElementMesh& mesh,
-                                        const PhotonField& field) {
+                                        const MonteCarloLevel& level) {
     std::vector<SolvedElement> out;
     out.reserve(mesh.sides().size());
     for (std::size_t s = 0; s < mesh.sides().size(); ++s) {
         const ElementSide& side = mesh.sides()[s];
         const Element& e = mesh[static_cast<std::size_t>(side.element)];
         const PreparedMaterial& m = scene.materials[static_cast<std::size_t>(e.material)];
-        const Rgb h = field.total(static_cast<int>(s));
-        Rgb b = times(m.reflectance, h);
-        if (!side.back) {
-            for (int c = 0; c < 3; ++c) b[c] += m.exitance_lm_m2[c];
+        Rgb h{0, 0, 0}, b{0, 0, 0};
+        for (const auto& light : level.lights) {
+            const double mf = light->maintenance_factor;
+            const Rgb hc = light->field.total(static_cast<int>(s));
+            Rgb bc = times(m.reflectance, hc);
+            if (!side.back && (light->component < 0 || light->component == m.component)) {
+                for (int c = 0; c < 3; ++c) bc[c] += m.exitance_lm_m2[c];
+            }
+            for (int c = 0; c < 3; ++c) {
+                h[c] += mf * hc[c];
+                b[c] += mf * bc[c];
+            }
         }
         out.push_back({e.surface, e.material, e.area_m2, side.back, false, h, b});
     }
     return out;
+}
+
+// The worst of the sets' errors, each scaled by `scale`: the eyes' are budgeted at the
+// tolerance over their own target.
+MonteCarloError worst_error(const std::vector<SetError>& sets, double scale) {
+    MonteCarloError worst;
+    for (const SetError& set : sets) {
+        if (!(set.mean > 0)) continue;
+        MonteCarloError e = set.error;
+        e.total *= scale;
+        e.parts.gather_noise *= scale;
+        e.parts.photon_noise *= scale;
+        e.parts.discretisation *= scale;
+        if (!(e.total <= worst.total)) worst = e;
+    }
+    return worst;
+}
+
+// The maintained sensor values, Σ factor × component, of the sensor sets (not the observers).
+std::vector<double> maintained_values(const MonteCarloLevel& level, std::size_t sensor_points) {
+    std::vector<double> out(sensor_points, 0.0);
+    for (const auto& light : level.lights) {
+        for (std::size_t i = 0; i < sensor_points; ++i)
+            out[i] += light->maintenance_factor * light->points[i].illuminance;
+    }
+    return out;
+}
+
+// The estimate of the maintained values: per set, Σ factor × each component's RMS error over
+// Σ factor × its mean, a bound for any correlation between them (Minkowski); the worst set.
+MonteCarloError maintained_error(const MonteCarloLevel& level) {
+    if (level.lights.size() == 1) return level.lights.front()->error;
+    MonteCarloError worst;
+    for (std::size_t s = 0; s < level.lights.front()->set_errors.size(); ++s) {
+        double mean = 0;
+        MonteCarloError sum;
+        for (const auto& light : level.lights) {
+            const SetError& e = light->set_errors[s];
+            const double scale = light->maintenance_factor * e.mean;
+            mean += scale;
+            sum.total += scale * e.error.total;
+            sum.parts.gather_noise += scale * e.error.parts.gather_noise;
+            sum.parts.photon_noise += scale * e.error.parts.photon_noise;
+            sum.parts.discretisation += scale * e.error.parts.discretisation;
+        }
+        if (!(mean > 0)) continue;
+        sum.total /= mean;
+        sum.parts.gather_noise /= mean;
+        sum.parts.photon_noise /= mean;
+        sum.parts.discretisation /= mean;
+        if (!(sum.total <= worst.total)) worst = sum;
+    }
+    return worst;
 }
 
 // The elements' front sides, flat-shaded, in world coordinates.
@@ -96,14 +201,41 @@ SolvedMesh display_mesh(const PreparedScene& scene, const ElementMesh& mesh,
 }
 
 std::vector<SensorResult> sensor_results(const PreparedScene& scene,
-                                         const std::vector<GatheredPoint>& points) {
+                                         const std::vector<double>& values) {
     std::vector<SensorResult> out;
     std::size_t next = 0;
     for (const PreparedSensorSet& set : scene.sensors) {
         SensorResult r = sensor_result_for(set);
-        for (double& v : r.illuminance) v = points[next++].illuminance;
+        for (double& v : r.illuminance) v = values[next++];
         fill_sensor_statistics(r);
         out.push_back(std::move(r));
+    }
+    return out;
+}
+
+// What each component's light gives the lighting designer's results: its values at the sensor
+// sets and observers' eyes, their errors, and its luminaires' glare at every observer.
+std::vector<ComponentValues> component_values(const PreparedScene& scene,
+                                              const MonteCarloLevel& level,
+                                              const Visibility& visibility, std::uint64_t& rays) {
+    std::vector<ComponentValues> out;
+    for (const auto& light : level.lights) {
+        ComponentValues& v = out.emplace_back();
+        std::size_t next = 0;
+        for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
+            std::vector<double>& set = v.sets.emplace_back();
+            for (std::size_t k = 0; k < scene.sensors[s].points.size(); ++k)
+                set.push_back(light->points[next++].illuminance);
+            const SetError& e = light->set_errors[s];
+            v.set_error_lx.push_back(e.error.total * e.mean);
+        }
+        for (std::size_t k = 0; k < scene.observers.size(); ++k) {
+            const PreparedObserver& o = scene.observers[k];
+            const SetError& e = light->eye_errors[k];
+            v.eye_indirect_lx.push_back(light->eye_points[k].illuminance);
+            v.eye_indirect_error_lx.push_back(e.error.total * e.mean);
+            v.glare_sums.push_back(glare_sum(scene, o, visibility, light->component, rays));
+        }
     }
     return out;
 }
@@ -115,25 +247,40 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     result.scene = scene_.name;
     const PreparedScene& scene = input.scene;
     std::vector<std::size_t> set_sizes;
-    for (const PreparedSensorSet& set : scene.sensors) set_sizes.push_back(set.points.size());
-    if (std::all_of(set_sizes.begin(), set_sizes.end(), [](std::size_t n) { return n == 0; })) {
+    std::size_t sensor_points = 0;
+    for (const PreparedSensorSet& set : scene.sensors) {
+        set_sizes.push_back(set.points.size());
+        sensor_points += set.points.size();
+    }
+    if (sensor_points == 0) {
         result.error =
             "method \"monte-carlo\" measures its error at the sensors, and the scene has none";
         return result;
     }
+    // Each observer's eye is a set of one: its background luminance is measured like a
+    // sensor's value, to its own target.
+    const std::vector<std::size_t> eye_sizes(scene.observers.size(), 1);
+    const double eye_scale =
+        options_.tolerance / std::max(options_.tolerance, std::pow(10.0, kUgrErrorTarget / 8) - 1);
 
     const auto stop = [this] { return should_stop(); };
-    SampleBudget budget{0, kInitialSets};
     StageStats meshing{"meshing", 0, 0, 0}, photons{"photons", 0, 0, 0};
     StageStats gathering{"gather", 0, 0, 0}, estimating{"estimate", 0, 0, 0};
+    std::uint64_t eye_rays = 0;
     MonteCarloError error;
     double reported = std::numeric_limits<double>::infinity();
-    std::vector<GatheredPoint> points;
     std::unique_ptr<MonteCarloLevel> level;
+    std::vector<std::pair<SampleBudget, int>> carried;  // each component's samples, coarser level
     std::size_t rounds = 0;
     bool stopped = false;
     std::uint64_t mesh_version = kFirstMeshVersion;
     double edge = kEdgeOfFreePath * input.mean_free_path_m;
+    // A component is done once its own estimates meet the tolerance: every sum of components
+    // with weights in [0, 1] then does too.
+    const double tolerance = options_.tolerance;
+    const auto done = [tolerance](const ComponentLight& light) {
+        return light.reported <= tolerance && light.eye_reported <= tolerance;
+    };
     for (int refinements = 0;; ++refinements, edge *= kRefinementRatio) {
         // Stage: meshing — elements, and a ray tracer over them so that a hit names its element.
         Clock::time_point stage_start = Clock::now();
@@ -145,77 +292,135 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         meshing.memory_bytes =
             level->mesh.size() * sizeof(Element) + level->mesh.sides().size() * sizeof(ElementSide);
         const double share = std::min(1.0, std::pow(kInitialTolerance / options_.tolerance, 2));
-        budget.photons =
-            std::max({budget.photons, kMinInitialPhotons,
-                      static_cast<std::size_t>(kInitialPhotonsPerSide * share *
-                                               static_cast<double>(level->mesh.sides().size()))});
-        PhotonField& field = level->field;
-        SensorGather& gather = level->gather;
+        for (std::size_t c = 0; c < level->lights.size(); ++c) {
+            ComponentLight& light = *level->lights[c];
+            if (c < carried.size()) std::tie(light.budget, light.eye_sets) = carried[c];
+            light.budget.photons = std::max(
+                {light.budget.photons, kMinInitialPhotons,
+                 static_cast<std::size_t>(kInitialPhotonsPerSide * share *
+                                          static_cast<double>(level->mesh.sides().size()))});
+        }
         bool refine = false;
         for (;; ++rounds) {
             // Stage: photons — the reflected light field, to this round's budget.
             stage_start = Clock::now();
             report("photons", 0.1, rounds, reported);
-            const std::uint64_t photon_rays =
-                field.trace(budget.photons - std::min(budget.photons, field.photons()),
-                            level->sources, *level->visibility, stop);
-            rays_ += photon_rays;
-            photons.rays += photon_rays;
+            for (const auto& light : level->lights) {
+                if (done(*light)) continue;
+                const std::uint64_t photon_rays = light->field.trace(
+                    light->budget.photons - std::min(light->budget.photons, light->field.photons()),
+                    light->sources, *level->visibility, stop);
+                rays_ += photon_rays;
+                photons.rays += photon_rays;
+            }
             photons.seconds += seconds_since(stage_start);
-            // Stage: gather — the sensors' ray sets, to this round's budget.
+            // Stage: gather — the sensors' and eyes' ray sets, to this round's budget.
             stage_start = Clock::now();
             report("gather", 0.5, rounds, reported);
-            const std::uint64_t gather_rays = gather.gather(budget.sets, stop);
-            rays_ += gather_rays;
-            gathering.rays += gather_rays;
+            for (const auto& light : level->lights) {
+                if (done(*light)) continue;
+                const std::uint64_t gather_rays = light->gather.gather(light->budget.sets, stop);
+                const std::uint64_t eye_gather_rays = light->eyes.gather(light->eye_sets, stop);
+                rays_ += gather_rays + eye_gather_rays;
+                gathering.rays += gather_rays + eye_gather_rays;
+                eye_rays += eye_gather_rays;
+            }
             gathering.seconds += seconds_since(stage_start);
             // Stage: estimate — every point's value and error parts on the field so far.
             stage_start = Clock::now();
-            points = gather.evaluate(field);
-            error = combine_errors(points, set_sizes);
-            // A later round never claims a larger error for its better answer.
+            for (const auto& light : level->lights) {
+                if (done(*light)) continue;
+                light->points = light->gather.evaluate(light->field);
+                light->set_errors = set_errors(light->points, set_sizes);
+                light->error = combine_errors(light->points, set_sizes);
+                light->eye_points = light->eyes.evaluate(light->field);
+                light->eye_errors = set_errors(light->eye_points, eye_sizes);
+                light->eye_error = worst_error(light->eye_errors, eye_scale);
+                // A later round never claims a larger error for its better answer.
+                light->reported = std::min(light->reported, light->error.total);
+                light->eye_reported = std::min(light->eye_reported, light->eye_error.total);
+            }
+            error = maintained_error(*level);
             reported = std::min(reported, error.total);
             estimating.seconds += seconds_since(stage_start);
             snapshots_.offer(
                 std::make_shared<const SolvedMesh>(
-                    display_mesh(scene, level->mesh, solved_sides(scene, level->mesh, field))),
+                    display_mesh(scene, level->mesh, solved_sides(scene, level->mesh, *level))),
                 mesh_version,
-                std::make_shared<const std::vector<SensorResult>>(sensor_results(scene, points)));
+                std::make_shared<const std::vector<SensorResult>>(
+                    sensor_results(scene, maintained_values(*level, sensor_points))));
             report("estimate", 0.9, rounds + 1, reported);
             // A round cut short by a cancel or the time limit has not earned `converged`.
-            const bool complete = field.photons() >= budget.photons && gather.sets() >= budget.sets;
+            const bool complete =
+                std::all_of(level->lights.begin(), level->lights.end(),
+                            [](const auto& light) { return light->complete(); });
             if (!complete || should_stop()) {
                 stopped = true;
                 break;
             }
-            if (reported <= options_.tolerance) break;
+            if (std::all_of(level->lights.begin(), level->lights.end(),
+                            [&](const auto& light) { return done(*light); })) {
+                break;
+            }
             // Bias does not fall with samples: a finer mesh does.
-            if (!(error.parts.discretisation < kTargetShare * options_.tolerance)) {
+            const double bias_target = kTargetShare * options_.tolerance;
+            const bool biased =
+                std::any_of(level->lights.begin(), level->lights.end(), [&](const auto& light) {
+                    return !done(*light) &&
+                           !(light->error.parts.discretisation < bias_target &&
+                             light->eye_error.parts.discretisation < bias_target);
+                });
+            if (biased) {
                 refine = refinements < kMaxRefinements;
                 stopped = !refine;
                 break;
             }
-            const double per_photon =
-                static_cast<double>(photons.rays) /
-                static_cast<double>(std::max<std::size_t>(field.photons(), 1));
-            const double per_set = static_cast<double>(gathering.rays) / gather.sets();
-            budget = next_budget(error, {field.photons(), gather.sets()},
-                                 kTargetShare * options_.tolerance, per_photon, per_set);
+            std::size_t traced = 0;
+            int sets = 0, eye_sets = 0;
+            for (const auto& light : level->lights) {
+                traced += light->field.photons();
+                sets += light->gather.sets();
+                eye_sets += light->eyes.sets();
+            }
+            const double per_photon = static_cast<double>(photons.rays) /
+                                      static_cast<double>(std::max<std::size_t>(traced, 1));
+            const double per_set =
+                static_cast<double>(gathering.rays - eye_rays) / std::max(sets, 1);
+            const double per_eye_set = static_cast<double>(eye_rays) / std::max(eye_sets, 1);
+            for (const auto& light : level->lights) {
+                if (done(*light)) continue;
+                const SampleBudget now{light->field.photons(), light->gather.sets()};
+                if (!(light->reported <= tolerance) || scene.observers.empty()) {
+                    light->budget = next_budget(light->error, now, bias_target, per_photon, per_set);
+                }
+                if (!(light->eye_reported <= tolerance)) {
+                    const SampleBudget eyes =
+                        next_budget(light->eye_error, {now.photons, light->eyes.sets()},
+                                    bias_target, per_photon, per_eye_set);
+                    light->budget.photons = std::max(light->budget.photons, eyes.photons);
+                    light->eye_sets = eyes.sets;
+                }
+            }
         }
         if (!refine) break;
         // The finer level starts afresh; its noise needs the samples the coarser one had.
-        budget = {level->field.photons(), level->gather.sets()};
+        carried.clear();
+        for (const auto& light : level->lights) {
+            carried.push_back(
+                {{light->field.photons(), light->gather.sets()}, light->eyes.sets()});
+        }
         reported = std::numeric_limits<double>::infinity();
     }
     ++rounds;
     const ElementMesh& mesh = level->mesh;
-    const PhotonField& field = level->field;
-    photons.memory_bytes = field.memory_bytes();
-    gathering.memory_bytes = level->gather.memory_bytes();
+    for (const auto& light : level->lights) {
+        photons.memory_bytes += light->field.memory_bytes();
+        gathering.memory_bytes += light->gather.memory_bytes() + light->eyes.memory_bytes();
+    }
     for (const StageStats& st : {meshing, photons, gathering, estimating}) stages_.push_back(st);
 
-    result.sensors = sensor_results(scene, points);
-    const std::vector<SolvedElement> sides = solved_sides(scene, mesh, field);
+    result.sensors = sensor_results(scene, maintained_values(*level, sensor_points));
+    const std::vector<SolvedElement> sides = solved_sides(scene, mesh, *level);
     SurfaceSummary summary = summarise_surfaces(scene, sides, scene.channels);
     result.surfaces = std::move(summary.surfaces);
     result.stats.emitted_flux_lm = summary.emitted_flux_lm;
@@ -224,6 +429,9 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     if (options_.want_mesh) result.mesh = *solved;
     finish_stats(result, "monte-carlo", mesh.size(), rounds, reported, 0, scene.channels, stopped);
     result.stats.error_parts = error.parts;
+    assemble_lighting(scene_, scene, component_values(scene, *level, *input.visibility, rays_),
+                      result);
+    result.stats.rays = rays_;
     final_mesh_ = solved;
     final_mesh_version_ = mesh_version;
     return result;

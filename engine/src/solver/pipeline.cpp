@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include "design/light_components.h"
 #include "formfactor/enclosure.h"
 #include "formfactor/transport.h"
 #include "meshing/patch_mesh.h"
@@ -285,12 +286,20 @@ Result Pipeline::run() {
     }
     const std::size_t polygons = prepared.scene.pieces.size();
     std::string method = options_.method;
+    // Groups, sensor kinds and observers need the Monte Carlo method (docs/lighting-design.md).
+    const std::string monte_carlo_only = monte_carlo_only_reason(scene_);
+    if (!monte_carlo_only.empty() && method != "auto" && method != "monte-carlo") {
+        result.error = monte_carlo_only + ", not \"" + method + "\"";
+        return result;
+    }
+    if (method == "auto" && !monte_carlo_only.empty()) method = "monte-carlo";
     // Rooms with furniture and sensors: photons and a final gather cost little per polygon and
     // measure their own error where it is asked for (the sensors); without sensors the
     // radiosity methods' surface-wise estimate is the one that means something. A handful of
     // walls stays dense: its surfaces are exact there, and the photons' surface averages carry
     // noise that no estimate covers (docs/monte-carlo.md).
     const bool has_sensors =
+        !prepared.scene.observers.empty() ||
         std::any_of(prepared.scene.sensors.begin(), prepared.scene.sensors.end(),
                     [](const PreparedSensorSet& s) { return !s.points.empty(); });
     if (method == "auto" && polygons > kMaxAutoDensePolygons)
@@ -332,6 +341,7 @@ Result Pipeline::run() {
         refine_to_tolerance(prepared, method, solved);
         record_stage("checking", check_start, rays_ - rays_before, 0);
     }
+    if (solved.status != SolveStatus::failed) finish_lighting(prepared, solved);
     finish(solved);
     return solved;
 }

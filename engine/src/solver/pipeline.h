@@ -97,6 +97,10 @@ private:
     /// Whether `auto` solves a scene of few polygons hierarchically after all: its dense mesh
     /// would be `size`, too large, and the asked tolerance is one the hierarchy can meet.
     bool prefers_hierarchy(const DenseMeshSize& size) const;
+    /// The radiosity methods' part of what a lighting designer reads (pipeline_lighting.cpp):
+    /// the one maintenance factor applied to every value, the initial values beside them,
+    /// requirements checked.
+    void finish_lighting(const PreparedSolve& prepared, Result& result);
     /// The steps every finished result takes: the estimate's floor, `stopped` for a result that
     /// misses its tolerance, the stage statistics, the final snapshot and progress.
     void finish(Result& solved);

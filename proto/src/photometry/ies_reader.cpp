@@ -87,6 +87,27 @@ std::vector<double> read_angles(Numbers& numbers, int count, const char* what) {
     return angles;
 }
 
+/// LM-63's luminous opening (width along C90, length along C0, height up; negative values name
+/// round shapes: −d 0 0 or −d −d 0 a disc, −d −d h a vertical cylinder, −d −d −d a sphere).
+/// Horizontal cylinders and ellipsoids become the box around them.
+LuminousShape opening(double width, double length, double height) {
+    LuminousShape s;
+    if (width < 0 && height < 0 && (length < 0 || length == 0) &&
+        (length == 0 || length == width) && height == width) {
+        s.sphere = true;
+        s.length = s.width = s.height = -width;
+        return s;
+    }
+    s.round = width < 0 && length <= 0 && height >= 0;
+    s.width = std::abs(width);
+    s.length = length == 0 && s.round ? s.width : std::abs(length);
+    s.height = std::abs(height);
+    // A horizontal cylinder (one of width or length 0, height −d): d wide across its axis.
+    if (height < 0 && width == 0) s.width = s.height;
+    if (height < 0 && length == 0) s.length = s.height;
+    return s;
+}
+
 PhotometricTable read(std::string_view text) {
     std::vector<std::string_view> lines;
     for (std::size_t start = 0; start <= text.size();) {
@@ -139,8 +160,10 @@ PhotometricTable read(std::string_view text) {
     const int units = numbers.take_whole("units type", 1);
     if (units != 1 && units != 2) refuse(units_line, "units type must be 1 (feet) or 2 (metres)");
     // The luminous opening: a point source has none, but the numbers must be there.
-    for (const char* what : {"width", "length", "height"})
-        numbers.take(std::string("missing ") + what);
+    const double to_m = units == 1 ? 0.3048 : 1.0;
+    const double width = numbers.take("missing width") * to_m;
+    const double length = numbers.take("missing length") * to_m;
+    const double height = numbers.take("missing height") * to_m;
     const int ballast_line = numbers.line();
     const double ballast = numbers.take("missing ballast factor");
     if (!(ballast > 0)) refuse(ballast_line, "the ballast factor must be > 0");
@@ -148,6 +171,7 @@ PhotometricTable read(std::string_view text) {
     numbers.take("missing input watts");
 
     PhotometricTable table;
+    table.luminous = opening(width, length, height);
     table.gamma_deg = read_angles(numbers, vertical, "vertical angles");
     const int c_line = numbers.line();
     table.c_deg = read_angles(numbers, horizontal, "horizontal angles");

@@ -65,7 +65,31 @@ private:
 
 // Line numbers of the fixed header (EULUMDAT, Stockmar 1990).
 constexpr std::size_t kTypeLine = 2, kSymmetryLine = 3, kPlaneCountLine = 4, kGammaCountLine = 6,
+                      kLuminousLengthLine = 16, kLuminousWidthLine = 17, kLuminousHeightLine = 18,
                       kConversionLine = 24, kLampSetsLine = 26;
+
+/// The luminous area (lines 16–21, mm): its length runs along the C90 plane (a linear
+/// luminaire's axis), its width b1 along C0 (0 for a disc of diameter `length`); the four
+/// heights of luminous sides (C0, C90, C180, C270) are averaged.
+LuminousShape luminous_area(const Lines& lines) {
+    const double mm = 1e-3;
+    const double length = lines.number(kLuminousLengthLine, "length of luminous area") * mm;
+    const double width = lines.number(kLuminousWidthLine, "width of luminous area") * mm;
+    double height = 0;
+    for (std::size_t k = 0; k < 4; ++k)
+        height += lines.number(kLuminousHeightLine + k, "height of luminous area") * mm / 4;
+    for (const auto& [line, value] :
+         {std::pair{kLuminousLengthLine, length}, {kLuminousWidthLine, width}}) {
+        if (value < 0) refuse(line, "luminous area dimensions must be >= 0");
+    }
+    if (height < 0) refuse(kLuminousHeightLine, "luminous area heights must be >= 0");
+    LuminousShape s;
+    s.round = width == 0;
+    s.length = s.round ? length : width;
+    s.width = length;
+    s.height = height;
+    return s;
+}
 
 PhotometricTable read(std::string_view text) {
     const Lines lines(text);
@@ -100,6 +124,7 @@ PhotometricTable read(std::string_view text) {
         c_all.push_back(lines.number(c_line + static_cast<std::size_t>(k), "C-plane angle"));
     }
     PhotometricTable table;
+    table.luminous = luminous_area(lines);
     for (int k = 0; k < ng; ++k) {
         const std::size_t at = gamma_line + static_cast<std::size_t>(k);
         const double g = lines.number(at, "gamma angle");

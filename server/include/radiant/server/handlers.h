@@ -36,6 +36,10 @@ Response get_result(ServiceContext& ctx, const Request& request, const std::stri
 /// latest snapshot, without sensors (they are computed at the end of a solve).
 Response get_result_glb(ServiceContext& ctx, const Request& request, const std::string& id);
 Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id);
+/// A light scene ({"name", "dimming"}) from a finished job's group contributions, without
+/// solving again (light_scene_handler.cpp): 409 while the job runs or when its scene has no
+/// groups, 400 with pointers for an unknown group or a dimming outside [0, 1].
+Response post_light_scene(ServiceContext& ctx, const Request& request, const std::string& id);
 Response list_jobs(ServiceContext& ctx, const Request& request, const Query& query);
 Response healthz(ServiceContext& ctx, const Request& request);
 Response metrics(ServiceContext& ctx, const Request& request);

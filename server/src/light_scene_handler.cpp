@@ -1,0 +1,61 @@
+// POST /v1/jobs/{id}/scenes: a light scene from a finished job's stored solution, without
+// solving again. Light is linear in the emission: the stored result keeps every group's
+// contribution (its `groups`), and a light scene is their sum with the posted dimming.
+#include <nlohmann/json.hpp>
+
+#include "radiant/lighting.h"
+#include "radiant/proto/lighting_json.h"
+#include "radiant/server/handlers.h"
+
+namespace radiant::server::handlers {
+
+Response post_light_scene(ServiceContext& ctx, const Request& request, const std::string& id) {
+    const std::string& body = request.body();
+    if (body.size() > ctx.max_body_bytes) {
+        return error_response(
+            request, http::status::payload_too_large, "too_large",
+            "the request body is larger than " + std::to_string(ctx.max_body_bytes) + " bytes");
+    }
+    auto posted = proto::parse_light_scene(body);
+    if (auto* problems = std::get_if<std::vector<Problem>>(&posted)) {
+        return error_response(request, http::status::bad_request, "invalid_light_scene", "", "",
+                              *problems);
+    }
+    const auto job = ctx.jobs.find(id);
+    if (!job) {
+        return error_response(request, http::status::not_found, "not_found",
+                              "no job with id \"" + id + "\"");
+    }
+    if (job->status == JobStatus::queued || job->status == JobStatus::running) {
+        return error_response(request, http::status::conflict, "not_ready",
+                              "job " + id + " is " + to_string(job->status) +
+                                  "; light scenes need its finished solution");
+    }
+    const auto stored = ctx.store.result(id);
+    if (!stored) {
+        return error_response(
+            request, http::status::not_found, "no_result",
+            "job " + id + " was " + to_string(job->status) + " before it produced a result");
+    }
+    const auto doc = nlohmann::json::parse(*stored, nullptr, false);
+    std::string error;
+    const Result solution = proto::lighting_solution_from_json(doc, error);
+    if (!error.empty()) {
+        return error_response(request, http::status::internal_server_error, "internal",
+                              "the stored result of job " + id + " cannot be read: " + error);
+    }
+    if (solution.groups.empty()) {
+        return error_response(request, http::status::conflict, "no_groups",
+                              "job " + id + "'s scene names no groups and no light scenes, so "
+                              "its solve kept no group contributions");
+    }
+    auto evaluated = evaluate_light_scene(solution, std::get<LightScene>(posted));
+    if (auto* problems = std::get_if<std::vector<Problem>>(&evaluated)) {
+        return error_response(request, http::status::bad_request, "invalid_light_scene", "", "",
+                              *problems);
+    }
+    return json_response(request, http::status::ok,
+                         proto::light_scene_to_json(std::get<LightSceneResult>(evaluated)));
+}
+
+}  // namespace radiant::server::handlers

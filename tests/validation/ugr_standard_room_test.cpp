@@ -1,0 +1,188 @@
+// UGR on the standard room of the CIE tabular method (CIE 117:1995, CIE 190:2010): a room 4H
+// across and 8H along the line of sight, H = 2 m between the eye's plane and the luminaires',
+// reflectances 0.7 (ceiling, at the luminaire plane), 0.5 (walls), 0.2 (the plane of the eye),
+// luminaires at spacing H (spacing-to-height ratio 1), the observer at the middle of the short
+// wall looking along the room. The test computes the tabular value from the method's own
+// formulas — the glare sum with the Guth position index, and the background luminance
+// L_b = E_WID/π with E_WID = Σ Φ_direct · F_T / A_w, the transfer factors F_T of a three-surface
+// room by exact view factors, the direct flux on the floor by exact form factors — and the
+// solve must agree within 1 UGR unit. Its background luminance is the radiosity the eye sees.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "radiant/proto/scene_json.h"
+#include "radiant/solve.h"
+#include "solve_with.h"
+
+namespace radiant {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kH = 2, kX = 4 * kH, kY = 8 * kH;
+constexpr double kFlux = 3000, kSide = 0.6;  // lm per luminaire; its square luminous area, m
+// The luminaires hang just under the ceiling; the eye is just off the wall and the floor.
+constexpr double kLuminaireZ = kH - 0.005, kEye = 0.01;
+
+/// A square recessed panel of uniform luminance: I(γ) = I₀ cos γ, I₀ = Φ/π.
+std::string panel_ies() {
+    std::string ies = "IESNA:LM-63-2002\n[TEST] uniform panel\nTILT=NONE\n1 " +
+                      std::to_string(kFlux) + " 1 19 1 1 2 " + std::to_string(kSide) + " " +
+                      std::to_string(kSide) + " 0\n1.0 1.0 30\n";
+    for (int g = 0; g <= 90; g += 5) ies += std::to_string(g) + " ";
+    ies += "\n0\n";
+    for (int g = 0; g <= 90; g += 5)
+        ies += std::to_string(kFlux / kPi * std::cos(g * kPi / 180)) + " ";
+    return ies + "\n";
+}
+
+std::string scene_json() {
+    auto polygon = [](const char* name, const char* material, const std::string& points) {
+        return std::string(R"({"name": ")") + name + R"(", "material": ")" + material +
+               R"(", "polygon": )" + points + "}";
+    };
+    const std::string x = std::to_string(kX), y = std::to_string(kY), h = std::to_string(kH);
+    std::string surfaces =
+        polygon("floor", "floor", "[[0,0,0],[" + x + ",0,0],[" + x + "," + y + ",0],[0," + y + ",0]]") +
+        "," +
+        polygon("ceiling", "ceiling",
+                "[[0,0," + h + "],[0," + y + "," + h + "],[" + x + "," + y + "," + h + "],[" + x +
+                    ",0," + h + "]]") +
+        "," + polygon("south", "wall", "[[0,0,0],[0,0," + h + "],[" + x + ",0," + h + "],[" + x + ",0,0]]") +
+        "," +
+        polygon("north", "wall",
+                "[[0," + y + ",0],[" + x + "," + y + ",0],[" + x + "," + y + "," + h + "],[0," + y +
+                    "," + h + "]]") +
+        "," + polygon("west", "wall", "[[0,0,0],[0," + y + ",0],[0," + y + "," + h + "],[0,0," + h + "]]") +
+        "," +
+        polygon("east", "wall",
+                "[[" + x + ",0,0],[" + x + ",0," + h + "],[" + x + "," + y + "," + h + "],[" + x + "," +
+                    y + ",0]]");
+    std::string luminaires;
+    for (double lx = kH / 2; lx < kX; lx += kH) {
+        for (double ly = kH / 2; ly < kY; ly += kH) {
+            if (!luminaires.empty()) luminaires += ",";
+            luminaires += R"({"name": "L", "position": [)" + std::to_string(lx) + "," +
+                          std::to_string(ly) + "," + std::to_string(kLuminaireZ) +
+                          R"(], "distribution": {"ies": ")";
+            for (const char c : panel_ies()) luminaires += c == '\n' ? std::string("\\n") : std::string(1, c);
+            luminaires += R"("}})";
+        }
+    }
+    return R"({"format": "radiant-scene/1", "name": "cie-standard-room",
+      "materials": {"floor": {"reflectance": 0.2}, "wall": {"reflectance": 0.5},
+                    "ceiling": {"reflectance": 0.7}},
+      "surfaces": [)" +
+           surfaces + R"(], "luminaires": [)" + luminaires + R"(],
+      "sensors": [{"name": "reference plane", "normal": [0, 0, 1],
+                   "grid": {"origin": [0.5, 0.5, 0.01], "u": [7, 0, 0], "v": [0, 15, 0],
+                            "nu": 7, "nv": 15}}],
+      "observers": [{"name": "wall middle", "position": [4, )" + std::to_string(kEye) + ", " +
+           std::to_string(kEye) + R"(], "view": [0, 1, 0]}],
+      "settings": {"tolerance": 0.02}})";
+}
+
+// CIE 117's fit of the Luckiesh–Guth position index, written out again here.
+double guth(double r, double t, double h) {
+    const double alpha = std::atan2(std::abs(t), h) * 180 / kPi;
+    const double beta = std::atan(std::hypot(t, h) / r) * 180 / kPi;
+    return std::exp((35.2 - 0.31889 * alpha - 1.22 * std::exp(-2 * alpha / 9)) * 1e-3 * beta +
+                    (21 + 0.26667 * alpha - 0.002963 * alpha * alpha) * 1e-5 * beta * beta);
+}
+
+/// View factor between directly opposed parallel rectangles a × b at distance c (Hottel).
+double parallel_rectangles(double a, double b, double c) {
+    const double x = a / c, y = b / c;
+    const double sx = std::sqrt(1 + x * x), sy = std::sqrt(1 + y * y);
+    return 2 / (kPi * x * y) *
+           (std::log(std::sqrt((1 + x * x) * (1 + y * y) / (1 + x * x + y * y))) +
+            x * sy * std::atan(x / sy) + y * sx * std::atan(y / sx) - x * std::atan(x) -
+            y * std::atan(y));
+}
+
+/// Form factor from a downward-facing point at height h above a corner of an a × b rectangle.
+double point_to_corner_rectangle(double a, double b, double h) {
+    const double x = a / h, y = b / h;
+    return (x / std::sqrt(1 + x * x) * std::atan(y / std::sqrt(1 + x * x)) +
+            y / std::sqrt(1 + y * y) * std::atan(x / std::sqrt(1 + y * y))) /
+           (2 * kPi);
+}
+
+/// CIE 190's transfer factors: indirect flux reaching the walls per lumen falling directly on
+/// the floor, walls and ceiling of the three-surface room (exact view factors, radiosity solved).
+std::array<double, 3> transfer_factors() {
+    const double af = kX * kY, aw = 2 * kH * (kX + kY);
+    const double ffc = parallel_rectangles(kX, kY, kH), ffw = 1 - ffc;
+    const double fwf = af * ffw / aw, fww = 1 - 2 * fwf;
+    const double f[3][3] = {{0, ffw, ffc}, {fwf, fww, fwf}, {ffc, ffw, 0}};
+    const double rho[3] = {0.2, 0.5, 0.7}, area[3] = {af, aw, af};
+    std::array<double, 3> out{};
+    for (int source = 0; source < 3; ++source) {
+        // M = ρ (E_direct + F M), by Gauss–Seidel (the system is well conditioned).
+        double m[3] = {0, 0, 0};
+        for (int it = 0; it < 1000; ++it) {
+            for (int i = 0; i < 3; ++i) {
+                const double direct = i == source ? 1 / area[i] : 0;
+                m[i] = rho[i] * (direct + f[i][0] * m[0] + f[i][1] * m[1] + f[i][2] * m[2]);
+            }
+        }
+        out[static_cast<std::size_t>(source)] =
+            (f[1][0] * m[0] + f[1][1] * m[1] + f[1][2] * m[2]) * aw;
+    }
+    return out;
+}
+
+TEST(UgrStandardRoom, TransferFactorsAreCie190s) {
+    // CIE 190:2010 Table 5, k = 2.67, reflectances 0.7 / 0.5 / 0.2: 0.115, 0.211, 0.307.
+    const auto t = transfer_factors();
+    EXPECT_NEAR(t[0], 0.115, 0.0005);
+    EXPECT_NEAR(t[1], 0.211, 0.0005);
+    EXPECT_NEAR(t[2], 0.307, 0.0005);
+}
+
+TEST(UgrStandardRoom, AgreesWithTheTabularMethodWithinOneUnit) {
+    const proto::ParseOutcome outcome = proto::parse_scene(scene_json());
+    ASSERT_TRUE(outcome.ok()) << outcome.problems[0].pointer << ": " << outcome.problems[0].message;
+    const Result r = solve(*outcome.scene, options_from(outcome.scene->settings));
+    ASSERT_EQ(r.status, SolveStatus::converged) << testing::describe(r);
+    ASSERT_EQ(r.observers.size(), 1u);
+
+    // The tabular method. The eye at the middle of the wall at y = 0, the luminaire plane H up.
+    const double i0 = kFlux / kPi, area = kSide * kSide;
+    double glare = 0, floor_flux = 0;
+    int luminaires = 0;
+    for (double lx = kH / 2; lx < kX; lx += kH) {
+        for (double ly = kH / 2; ly < kY; ly += kH) {
+            ++luminaires;
+            const double t = lx - kX / 2, rr = ly - kEye, h = kLuminaireZ - kEye;
+            const double d2 = t * t + rr * rr + h * h;
+            const double cos_gamma = h / std::sqrt(d2);
+            // L = I/A_p = I₀cosγ/(A cosγ); ω = A cosγ/d².
+            const double luminance = i0 / area, omega = area * cos_gamma / d2;
+            const double p = guth(rr, t, h);
+            glare += luminance * luminance * omega / (p * p);
+            // Direct flux on the floor: the four corner rectangles under the luminaire.
+            floor_flux += kFlux * (point_to_corner_rectangle(lx, ly, kLuminaireZ) +
+                                   point_to_corner_rectangle(kX - lx, ly, kLuminaireZ) +
+                                   point_to_corner_rectangle(lx, kY - ly, kLuminaireZ) +
+                                   point_to_corner_rectangle(kX - lx, kY - ly, kLuminaireZ));
+        }
+    }
+    const double wall_flux = luminaires * kFlux - floor_flux;  // no light goes up
+    const auto ft = transfer_factors();
+    const double e_wid = (floor_flux * ft[0] + wall_flux * ft[1]) / (2 * kH * (kX + kY));
+    const double lb = e_wid / kPi;
+    const double tabular = 8 * std::log10(0.25 / lb * glare);
+
+    const ObserverResult& o = r.observers[0];
+    EXPECT_NEAR(o.glare_sum, glare, 0.02 * glare);  // the same luminaires, nearly the same eye
+    EXPECT_NEAR(o.ugr, tabular, 1.0) << "background " << o.background_luminance << " cd/m², the "
+                                     << "tabular method's " << lb;
+    EXPECT_LT(o.ugr_error_estimate, 0.25);
+}
+
+}  // namespace
+}  // namespace radiant
