@@ -71,8 +71,8 @@ Json groups_json(const std::vector<GroupContribution>& groups) {
                                  {"background_error", o.background_error},
                                  {"glare_sum", o.glare_sum}});
         }
-        Json group = {{"name", g.name}, {"sensors", std::move(sensors)},
-                      {"observers", std::move(observers)}};
+        Json group = {
+            {"name", g.name}, {"sensors", std::move(sensors)}, {"observers", std::move(observers)}};
         if (g.ra) group["ra"] = *g.ra;
         out.push_back(std::move(group));
     }
@@ -162,7 +162,8 @@ void add_lighting(const Result& result, nlohmann::json& doc) {
     if (!result.groups.empty()) doc["groups"] = groups_json(result.groups);
     if (!result.light_scenes.empty()) {
         Json scenes = Json::array();
-        for (const LightSceneResult& s : result.light_scenes) scenes.push_back(light_scene_to_json(s));
+        for (const LightSceneResult& s : result.light_scenes)
+            scenes.push_back(light_scene_to_json(s));
         doc["light_scenes"] = std::move(scenes);
     }
 }
@@ -238,15 +239,15 @@ Result lighting_solution_from_json(const nlohmann::json& doc, std::string& error
                 const std::size_t n = out.sensors[s].illuminance.size();
                 if (c.illuminance.size() != n ||
                     (!c.initial_illuminance.empty() && c.initial_illuminance.size() != n)) {
-                    if (error.empty()) error = "group \"" + group.name + "\" does not match the result";
+                    if (error.empty())
+                        error = "group \"" + group.name + "\" does not match the result";
                 }
                 group.sensors.push_back(std::move(c));
             }
             for (const Json& o : *observers) {
-                group.observers.push_back({read.text(o, "name"),
-                                           read.number(o, "background_luminance"),
-                                           read.number(o, "glare_sum"),
-                                           read.number(o, "background_error")});
+                group.observers.push_back(
+                    {read.text(o, "name"), read.number(o, "background_luminance"),
+                     read.number(o, "glare_sum"), read.number(o, "background_error")});
             }
             out.groups.push_back(std::move(group));
         }

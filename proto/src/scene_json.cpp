@@ -26,8 +26,8 @@ constexpr std::string_view kFormat = "radiant-scene/1";
 /// The part of a pointer that names one scene entity: "/surfaces/3", "/materials/wall",
 /// "/settings". Entities are the unit at which structural damage hides semantic problems.
 std::string entity_of(const std::string& pointer) {
-    static const std::set<std::string, std::less<>> lists{
-        "materials", "surfaces", "luminaires", "sensors", "observers", "light_scenes"};
+    static const std::set<std::string, std::less<>> lists{"materials", "surfaces",  "luminaires",
+                                                          "sensors",   "observers", "light_scenes"};
     const std::size_t first = pointer.find('/', 1);
     if (first == std::string::npos) return pointer;
     const std::string_view head = std::string_view(pointer).substr(1, first - 1);
@@ -174,10 +174,9 @@ private:
 Scene SceneReader::read(const Json& root) {
     Scene scene;
     const Ptr p;
-    check_keys(
-        root, p,
-        {"format", "name", "units", "materials", "surfaces", "luminaires", "sensors", "observers",
-         "light_scenes", "settings"});
+    check_keys(root, p,
+               {"format", "name", "units", "materials", "surfaces", "luminaires", "sensors",
+                "observers", "light_scenes", "settings"});
     if (const Json* j = member(root, p, "format", true)) {
         if (!j->is_string() || j->get<std::string>() != kFormat) {
             report(p / "format", "format must be \"" + std::string(kFormat) + "\"");
@@ -527,9 +526,9 @@ SensorSet SceneReader::sensor(const Json& j, const Ptr& p, std::size_t index) {
         s.points = grid(j["grid"], p / "grid");
         if (j["grid"].is_object() && !s.points.empty()) {
             const Json& g = j["grid"];
-            s.grid_area = GridArea{vec3(g["origin"], p / "grid" / "origin", "origin"),
-                                   vec3(g["u"], p / "grid" / "u", "u"),
-                                   vec3(g["v"], p / "grid" / "v", "v")};
+            s.grid_area =
+                GridArea{vec3(g["origin"], p / "grid" / "origin", "origin"),
+                         vec3(g["u"], p / "grid" / "u", "u"), vec3(g["v"], p / "grid" / "v", "v")};
         }
     } else {
         s.workplane = workplane(j["workplane"], p / "workplane");

@@ -46,8 +46,9 @@ Response post_light_scene(ServiceContext& ctx, const Request& request, const std
     }
     if (solution.groups.empty()) {
         return error_response(request, http::status::conflict, "no_groups",
-                              "job " + id + "'s scene names no groups and no light scenes, so "
-                              "its solve kept no group contributions");
+                              "job " + id +
+                                  "'s scene names no groups and no light scenes, so "
+                                  "its solve kept no group contributions");
     }
     auto evaluated = evaluate_light_scene(solution, std::get<LightScene>(posted));
     if (auto* problems = std::get_if<std::vector<Problem>>(&evaluated)) {

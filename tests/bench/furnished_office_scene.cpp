@@ -139,13 +139,18 @@ void add_room(std::vector<Surface>& surfaces, const MaterialMeshes& meshes, bool
     }
 }
 
-Workplane work_plane() {
+/// The sensor set "workplane": the floor's work plane, facing up.
+SensorSet work_plane_set() {
     Workplane w;
     w.surfaces = {"floor"};
     w.height = kWorkPlaneM;
     w.border = kWorkPlaneBorderM;
     w.spacing = kWorkPlaneSpacingM;
-    return w;
+    SensorSet set;
+    set.name = "workplane";
+    set.normal = {0, 0, 1};
+    set.workplane = w;
+    return set;
 }
 
 void require_valid(const std::vector<Problem>& problems, const std::string& scene) {
@@ -161,7 +166,7 @@ std::vector<Vec3> work_plane_points(const MaterialMeshes& meshes) {
     room.name = "room";
     room.materials = room_materials(false);
     add_room(room.surfaces, meshes, false, {}, "");
-    room.sensors.push_back({"workplane", {}, {0, 0, 1}, work_plane(), {}});
+    room.sensors.push_back(work_plane_set());
     require_valid(expand_workplanes(room), "room");
     return room.sensors[0].points;
 }
@@ -176,7 +181,7 @@ Scene office(const std::string& name, std::uint64_t seed, bool panels) {
         testing::room_without_ceiling(kRoomWidthM, kRoomDepthM, kRoomHeightM, "wall");
     add_room(scene.surfaces, meshes, panels, {}, "");
     scene.surfaces.insert(scene.surfaces.begin() + 2, shell.begin() + 1, shell.end());
-    scene.sensors.push_back({"workplane", {}, {0, 0, 1}, work_plane(), {}});
+    scene.sensors.push_back(work_plane_set());
     require_valid(check_scene(scene), name);
     require_valid(expand_workplanes(scene), name);
     return scene;
@@ -223,7 +228,8 @@ Scene furnished_floor(int rooms, std::uint64_t seed) {
     // Partitions: closed boxes on either side of each door and a lintel over it; the walls
     // along x also fill the corner between four rooms. Each door has a floor strip.
     MeshGeometry partitions;
-    SensorSet sensors{"workplane", {}, {0, 0, 1}, {}, {}};
+    SensorSet sensors;
+    sensors.name = "workplane";
     int sill = 0;
     const auto add_sill = [&](Vec3 origin, Vec3 u, Vec3 v) {
         scene.surfaces.push_back(testing::polygon_surface(numbered("door-sill-", ++sill), "floor",

@@ -49,7 +49,7 @@ TEST(CheckScene, ReflectanceRange) {
 
 TEST(CheckScene, NegativeEmission) {
     Scene scene = unit_square();
-    scene.materials[0].emission = Emission{Emission::Kind::flux, -1, std::nullopt};
+    scene.materials[0].emission = Emission{Emission::Kind::flux, -1, std::nullopt, {}};
     EXPECT_EQ(pointers(scene), Pointers{"/materials/m/emission/flux"});
 }
 
@@ -87,7 +87,11 @@ TEST(CheckScene, UnknownMaterialAndInvertedBox) {
 
 TEST(CheckScene, ZeroNormalAndAim) {
     Scene scene = unit_square();
-    scene.sensors.push_back({"s", {{0, 0, 1}}, {0, 0, 0}, {}, {}});
+    SensorSet zero_normal;
+    zero_normal.name = "s";
+    zero_normal.points = {{0, 0, 1}};
+    zero_normal.normal = {0, 0, 0};
+    scene.sensors.push_back(zero_normal);
     Luminaire l;
     l.flux_lm = 1;
     l.aim = {0, 0, 0};
@@ -100,13 +104,13 @@ TEST(CheckScene, PhotometricTables) {
     Scene scene = unit_square();
     Luminaire l;
     l.distribution = Distribution::photometric;
-    l.photometry = PhotometricTable{{0, 90}, {0, 90}, {100, 0, 100, 0}};
+    l.photometry = PhotometricTable{{0, 90}, {0, 90}, {100, 0, 100, 0}, {}};
     scene.luminaires = {l};
     EXPECT_EQ(pointers(scene), Pointers{});
     scene.luminaires[0].photometry->c_deg = {0, 45};
     scene.luminaires[0].rotation_deg = std::numeric_limits<double>::infinity();
     EXPECT_EQ(pointers(scene), (Pointers{"/luminaires/0/distribution", "/luminaires/0/rotation"}));
-    scene.luminaires[0].photometry = PhotometricTable{{0, 90}, {0}, {0, 0}};
+    scene.luminaires[0].photometry = PhotometricTable{{0, 90}, {0}, {0, 0}, {}};
     scene.luminaires[0].rotation_deg = 0;
     EXPECT_EQ(pointers(scene), Pointers{"/luminaires/0/distribution"});
 }

@@ -5,8 +5,8 @@
 
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "design/glare.h"
 #include "radiant/lighting.h"
@@ -179,7 +179,9 @@ TEST(TaskArea, BadRequirementsAreRefusedWithTheirPointer) {
     EXPECT_TRUE(has_pointer(problems_of(doc), "/sensors/0/requirement/activity"));
     doc["sensors"][0]["requirement"] = {{"u0", 1.5}};
     EXPECT_TRUE(has_pointer(problems_of(doc), "/sensors/0/requirement/u0"));
-    doc["sensors"][0] = {{"name", "p"}, {"normal", {0, 0, 1}}, {"points", {{1, 1, 1}}},
+    doc["sensors"][0] = {{"name", "p"},
+                         {"normal", {0, 0, 1}},
+                         {"points", {{1, 1, 1}}},
                          {"requirement", {{"em_lx", 200}}}};
     EXPECT_TRUE(has_pointer(problems_of(doc), "/sensors/0/requirement"));
 }
@@ -244,12 +246,10 @@ TEST(SensorKinds, UnderAPointSourceTheyMatchTheirClosedForms) {
         {"semi-cylindrical", intensity * sin_theta * (1 + cos_beta) / (kPi * d2)}};
     for (const auto& [kind, value] : expected) {
         // The vertical kinds face the horizontal part of their normal.
-        const Json normal = std::string(kind) == "planar" ? Json{0, 0, 1}
-                                                          : Json{facing.x, facing.y, 0.3};
-        doc["sensors"].push_back({{"name", kind},
-                                  {"kind", kind},
-                                  {"normal", normal},
-                                  {"points", {{x.x, x.y, x.z}}}});
+        const Json normal =
+            std::string(kind) == "planar" ? Json{0, 0, 1} : Json{facing.x, facing.y, 0.3};
+        doc["sensors"].push_back(
+            {{"name", kind}, {"kind", kind}, {"normal", normal}, {"points", {{x.x, x.y, x.z}}}});
     }
     const Result r = solved(doc);
     ASSERT_EQ(r.status, SolveStatus::converged) << testing::describe(r);
@@ -324,7 +324,8 @@ Json two_groups() {
     doc["materials"]["glow"] = {{"reflectance", 0.2},
                                 {"emission", {{"exitance", 2000}, {"group", "panel"}}}};
     doc["surfaces"].push_back(
-        {{"name", "panel"}, {"material", "glow"},
+        {{"name", "panel"},
+         {"material", "glow"},
          {"polygon", {{0.5, 3, 2.99}, {0.5, 3.5, 2.99}, {3.5, 3.5, 2.99}, {3.5, 3, 2.99}}}});
     doc["luminaires"][0]["group"] = "down";
     doc["light_scenes"] = {{{"name", "mix"}, {"dimming", {{"down", 0.3}, {"panel", 0.8}}}},

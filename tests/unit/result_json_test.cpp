@@ -13,7 +13,15 @@ Result converged() {
     r.status = SolveStatus::converged;
     r.stats.method = "jacobi";
     r.stats.patches = 12;
-    r.sensors.push_back({"wp", {1, 3}, 1, 3, 2, 0.5, 0.5, 1.0 / 3, {}});
+    SensorResult wp;
+    wp.name = "wp";
+    wp.illuminance = {1, 3};
+    wp.min = 1;
+    wp.max = 3;
+    wp.average = 2;
+    wp.uniformity = wp.u0 = 0.5;
+    wp.ud = 1.0 / 3;
+    r.sensors.push_back(wp);
     r.surfaces.push_back({"floor", 16, 500, 100});
     return r;
 }

@@ -403,7 +403,7 @@ Scene two_rooms(double wall) {
     Material partition = testing::gray("partition", 0.7);
     partition.two_sided = true;
     Material panel = testing::gray("panel", 0.0);
-    panel.emission = Emission{Emission::Kind::flux, 5000.0, std::nullopt};
+    panel.emission = Emission{Emission::Kind::flux, 5000.0, std::nullopt, {}};
     scene.materials = {wall_material, partition, panel};
     scene.surfaces = {
         testing::box_surface("shell", "wall", {0, 0, 0}, {length, 4, 3}, true),

@@ -73,7 +73,7 @@ struct Check {
 
 /// A requirement as applied: the values in force and where they came from.
 struct AppliedRequirement {
-    std::string source;  ///< "scene", "table" (an activity) or "surrounding" (EN 12464-1 Table 1)
+    std::string source;    ///< "scene", "table" (an activity) or "surrounding" (EN 12464-1 Table 1)
     std::string activity;  ///< reference number and name, when from the table
     std::optional<double> em_lx, u0, ugr_l, ra;
 };

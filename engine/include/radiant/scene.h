@@ -129,10 +129,10 @@ struct SensorSet {
     std::string name;
     std::vector<Vec3> points;  ///< grids are expanded to their cell centres, row-major, u fastest
     Vec3 normal{0, 0, 1};
-    SensorKind kind = SensorKind::planar;
     std::optional<Workplane> workplane;  ///< points come from expand_workplanes()
     std::optional<SensorGrid> grid;      ///< set by expand_workplanes()
-    std::optional<GridArea> grid_area;   ///< a `grid` set's area (set by the JSON reader)
+    SensorKind kind = SensorKind::planar;
+    std::optional<GridArea> grid_area;  ///< a `grid` set's area (set by the JSON reader)
     std::optional<Requirement> requirement;
     /// Set by expand_task_areas() on the immediate surrounding band it adds: the task area's
     /// index among the sensor sets.

@@ -50,11 +50,10 @@ double glare_sum(const PreparedScene& scene, const PreparedObserver& observer,
         const double intensity = luminance(l.flux_lm) * intensity_per_lm(l, to_eye);
         if (!(intensity > 0)) continue;
         const double full = projected_area_m2(l.luminous, 0, 0, 1);
-        const double area =
-            l.luminous.point() || full < kSmallSourceAreaM2
-                ? kSmallSourceAreaM2
-                : projected_area_m2(l.luminous, dot(to_eye, l.c0_axis), dot(to_eye, l.c90_axis),
-                                    dot(to_eye, l.aim));
+        const double area = l.luminous.point() || full < kSmallSourceAreaM2
+                                ? kSmallSourceAreaM2
+                                : projected_area_m2(l.luminous, dot(to_eye, l.c0_axis),
+                                                    dot(to_eye, l.c90_axis), dot(to_eye, l.aim));
         if (!(area > 0)) continue;
         ++rays;
         if (!visibility.visible(eye, l.position)) continue;

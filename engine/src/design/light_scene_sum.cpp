@@ -100,12 +100,13 @@ LightSceneResult sum_groups(const std::vector<SensorResult>& sensors,
     return out;
 }
 
-std::variant<LightSceneResult, std::vector<Problem>> evaluate_light_scene(
-    const Result& solved, const LightScene& scene) {
+std::variant<LightSceneResult, std::vector<Problem>> evaluate_light_scene(const Result& solved,
+                                                                          const LightScene& scene) {
     std::vector<Problem> problems;
     if (solved.groups.empty()) {
-        problems.push_back({"", "the solve kept no group contributions: its scene names no "
-                                "groups and no light scenes"});
+        problems.push_back({"",
+                            "the solve kept no group contributions: its scene names no "
+                            "groups and no light scenes"});
         return problems;
     }
     std::vector<double> dimming(solved.groups.size(), 0.0);
@@ -117,8 +118,8 @@ std::variant<LightSceneResult, std::vector<Problem>> evaluate_light_scene(
             std::string known;
             for (const GroupContribution& g : solved.groups)
                 known += (known.empty() ? "\"" : ", \"") + g.name + "\"";
-            problems.push_back({pointer, "the solve has no group \"" + name + "\" (groups: " +
-                                             known + ")"});
+            problems.push_back(
+                {pointer, "the solve has no group \"" + name + "\" (groups: " + known + ")"});
         } else if (!(value >= 0 && value <= 1)) {
             problems.push_back({pointer, "a dimming must be in [0, 1]"});
         } else {

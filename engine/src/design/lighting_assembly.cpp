@@ -13,10 +13,9 @@ namespace {
 std::vector<GroupContribution> group_contributions(const PreparedScene& prepared,
                                                    const std::vector<ComponentValues>& components) {
     const LightComponents& lc = prepared.components;
-    const bool maintained = std::any_of(lc.components.begin(), lc.components.end(),
-                                        [](const LightComponent& c) {
-                                            return c.maintenance_factor != 1;
-                                        });
+    const bool maintained =
+        std::any_of(lc.components.begin(), lc.components.end(),
+                    [](const LightComponent& c) { return c.maintenance_factor != 1; });
     std::vector<GroupContribution> groups(lc.groups.size());
     for (std::size_t g = 0; g < groups.size(); ++g) {
         GroupContribution& group = groups[g];
@@ -47,8 +46,7 @@ std::vector<GroupContribution> group_contributions(const PreparedScene& prepared
         }
         for (std::size_t k = 0; k < group.observers.size(); ++k) {
             // UGR rates the new installation: initial light (CIE 117's tables do too).
-            group.observers[k].background_luminance +=
-                values.eye_indirect_lx[k] / std::numbers::pi;
+            group.observers[k].background_luminance += values.eye_indirect_lx[k] / std::numbers::pi;
             group.observers[k].glare_sum += values.glare_sums[k];
             group.observers[k].background_error +=
                 values.eye_indirect_error_lx[k] / std::numbers::pi;

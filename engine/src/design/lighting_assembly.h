@@ -12,11 +12,11 @@ namespace radiant {
 
 /// One light component's light, before maintenance, as a solve measured it.
 struct ComponentValues {
-    std::vector<std::vector<double>> sets;  ///< [sensor set][point], lux
-    std::vector<double> set_error_lx;       ///< per sensor set: estimated RMS error, lux
-    std::vector<double> eye_indirect_lx;    ///< per observer: E_ind at the eye, lux
+    std::vector<std::vector<double>> sets;      ///< [sensor set][point], lux
+    std::vector<double> set_error_lx;           ///< per sensor set: estimated RMS error, lux
+    std::vector<double> eye_indirect_lx;        ///< per observer: E_ind at the eye, lux
     std::vector<double> eye_indirect_error_lx;  ///< per observer: its estimated error, lux
-    std::vector<double> glare_sums;         ///< per observer: Σ L²ω/p² of its luminaires
+    std::vector<double> glare_sums;             ///< per observer: Σ L²ω/p² of its luminaires
 };
 
 /// Fills `result`'s sensors (replacing them), observers, maintenance, groups (kept when the

@@ -170,7 +170,7 @@ Rgb LightSources::luminaire_part(std::size_t i, const Vec3& x, const Vec3& n,
 }
 
 Rgb LightSources::luminaires_at(const Vec3& x, const SensorReceiver& receiver,
-                               const Visibility& visibility, std::uint64_t& rays) const {
+                                const Visibility& visibility, std::uint64_t& rays) const {
     Rgb sum{0, 0, 0};
     const Vec3 from = x + receiver.offset_normal() * epsilon_;
     for (std::size_t i = 0; i < scene_.luminaires.size(); ++i) {

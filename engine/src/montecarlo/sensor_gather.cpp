@@ -68,9 +68,8 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
     const bool fixed = receiver.fixed();
     const Vec3 fixed_normal = receiver.normal_at(0);
     if (point.set_direct.empty() && !point.background) {
-        point.luminaires =
-            photometric(sources_.luminaires_at(point.position, receiver, visibility_, rays),
-                        channels);
+        point.luminaires = photometric(
+            sources_.luminaires_at(point.position, receiver, visibility_, rays), channels);
     }
     for (int set = static_cast<int>(point.set_direct.size()); set < sets; ++set) {
         SampleStream rng(seed_, stream_, index, static_cast<std::uint64_t>(set));
@@ -78,10 +77,10 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
         // one per ray in strata turned by a random offset (any offset covers every stratum).
         const Vec3 set_normal = fixed ? fixed_normal : receiver.normal_at(rng.next());
         const int offset = fixed ? 0 : static_cast<int>(rng.next() * kRaysPerSet);
-        double direct = photometric(sources_.emitting_pieces_at(point.position, set_normal,
-                                                                visibility_, rng, kPieceSamples,
-                                                                rays),
-                                    channels);
+        double direct =
+            photometric(sources_.emitting_pieces_at(point.position, set_normal, visibility_, rng,
+                                                    kPieceSamples, rays),
+                        channels);
         double reflected = 0;
         for (int k = 0; k < kRaysPerSet; ++k) {
             const Vec3 normal =

@@ -44,8 +44,7 @@ public:
     enum class Points { sensors, eyes };
 
     SensorGather(const PreparedScene& scene, const ElementMesh& mesh, const LightSources& sources,
-                 const Visibility& visibility, std::uint64_t seed,
-                 Points which = Points::sensors);
+                 const Visibility& visibility, std::uint64_t seed, Points which = Points::sensors);
 
     /// Casts ray sets until every point has `sets` of them; the exact luminaire light comes with
     /// the first. Returns the rays cast. Parallel over points; deterministic.
@@ -62,7 +61,7 @@ private:
     struct Point {
         Vec3 position;
         SensorReceiver receiver;
-        bool background = false;  ///< an observer's eye: no luminaire light
+        bool background = false;         ///< an observer's eye: no luminaire light
         double luminaires = 0;           ///< photometric, exact
         std::vector<double> set_direct;  ///< per set: emitting pieces + mean ρ ⊙ E_direct(hit)
         std::vector<int> hits;           ///< per ray, set by set: the side it landed on, or −1

@@ -32,7 +32,9 @@ public:
 
     /// Where shadow rays start from, off the point: along the normal (a sensor may lie on a
     /// desk), straight up for a cylinder.
-    Vec3 offset_normal() const { return kind_ == SensorKind::cylindrical ? Vec3{0, 0, 1} : normal_; }
+    Vec3 offset_normal() const {
+        return kind_ == SensorKind::cylindrical ? Vec3{0, 0, 1} : normal_;
+    }
 
 private:
     SensorKind kind_;

@@ -81,10 +81,10 @@ bool inside_polygon(const std::vector<Point2>& polygon, Point2 p) {
 double distance_to_segment(Point2 p, Point2 a, Point2 b) {
     const double du = b.first - a.first, dv = b.second - a.second;
     const double length2 = du * du + dv * dv;
-    const double t = length2 > 0 ? std::clamp(((p.first - a.first) * du +
-                                               (p.second - a.second) * dv) / length2,
-                                              0.0, 1.0)
-                                 : 0.0;
+    const double t =
+        length2 > 0 ? std::clamp(((p.first - a.first) * du + (p.second - a.second) * dv) / length2,
+                                 0.0, 1.0)
+                    : 0.0;
     return std::hypot(p.first - a.first - t * du, p.second - a.second - t * dv);
 }
 
@@ -126,7 +126,8 @@ std::variant<FloorPlan, std::string> FloorPlan::of(const Scene& scene,
             floors.push_back(std::move(f));
         }
     }
-    if (floors.empty()) return std::string("the named surfaces have no upward-facing horizontal face");
+    if (floors.empty())
+        return std::string("the named surfaces have no upward-facing horizontal face");
     plan.tolerance_ = 1e-9 * std::max(1.0, extent);
     const std::vector<Edge> edges = outline(floors, plan.tolerance_);
     // The grid runs along the floor's longest outline edge, so a turned room gets a turned grid.

@@ -39,7 +39,9 @@ public:
     /// Whether x lies inside furniture (a box facing out, or a closed mesh with outward faces).
     bool in_furniture(const Vec3& x) const;
     /// The point at plan coordinates (u, v) and height z.
-    Vec3 point(double u, double v, double z) const { return u_axis_ * u + v_axis_ * v + Vec3{0, 0, z}; }
+    Vec3 point(double u, double v, double z) const {
+        return u_axis_ * u + v_axis_ * v + Vec3{0, 0, z};
+    }
 
 private:
     struct Face {

@@ -53,8 +53,8 @@ struct PreparedLuminaire {
 
 struct PreparedSensorSet {
     std::string name;
-    std::vector<Vec3> points;        ///< local frame
-    Vec3 normal;                     ///< unit; vertical kinds: horizontal, the facing
+    std::vector<Vec3> points;  ///< local frame
+    Vec3 normal;               ///< unit; vertical kinds: horizontal, the facing
     SensorKind kind = SensorKind::planar;
     std::optional<SensorGrid> grid;  ///< work planes: world frame, metres
 };

@@ -37,21 +37,22 @@ std::pair<double, double> coordinates(const Area& a, const Vec3& x) {
 /// The band's grid: cells of the rectangle grown by the band's width that lie outside the task
 /// area (and, over a floor, on it and outside furniture). Spacing by EN 12464-1's formula on the
 /// grown rectangle, at most the band's width, so that a row of points lies in it.
-SensorGrid band_grid(const Area& task, double band, double meters_per_unit,
-                     const FloorPlan* plan, double height) {
+SensorGrid band_grid(const Area& task, double band, double meters_per_unit, const FloorPlan* plan,
+                     double height) {
     const Vec3 eu = normalized(task.u), ev = normalized(task.v);
     SensorGrid grid;
     grid.origin = task.origin - eu * band - ev * band;
     grid.u = task.u + eu * (2 * band);
     grid.v = task.v + ev * (2 * band);
     const double longer = std::max(length(grid.u), length(grid.v));
-    grid.spacing = std::min(
-        0.2 * std::pow(5.0, std::log10(longer * meters_per_unit)) / meters_per_unit, band);
+    grid.spacing =
+        std::min(0.2 * std::pow(5.0, std::log10(longer * meters_per_unit)) / meters_per_unit, band);
     grid.nu = static_cast<int>(std::ceil(length(grid.u) / grid.spacing - 1e-9));
     grid.nv = static_cast<int>(std::ceil(length(grid.v) / grid.spacing - 1e-9));
     for (int iv = 0; iv < grid.nv; ++iv) {
         for (int iu = 0; iu < grid.nu; ++iu) {
-            Vec3 x = grid.origin + grid.u * ((iu + 0.5) / grid.nu) + grid.v * ((iv + 0.5) / grid.nv);
+            Vec3 x =
+                grid.origin + grid.u * ((iu + 0.5) / grid.nu) + grid.v * ((iv + 0.5) / grid.nv);
             const auto [s, t] = coordinates(task, x);
             if (s > 0 && s < 1 && t > 0 && t < 1) continue;
             if (plan) {
@@ -100,14 +101,15 @@ std::vector<Problem> expand_task_areas(Scene& scene, const SceneLimits& limits) 
     for (std::size_t i = 0; i < sets; ++i) {
         const SensorSet task = scene.sensors[i];
         if (!task.requirement || task.surrounding_of) continue;
-        const bool expanded = std::any_of(scene.sensors.begin(), scene.sensors.end(),
-                                          [&](const SensorSet& s) { return s.surrounding_of == i; });
+        const bool expanded =
+            std::any_of(scene.sensors.begin(), scene.sensors.end(),
+                        [&](const SensorSet& s) { return s.surrounding_of == i; });
         if (expanded) continue;
         const std::string pointer = "/sensors/" + std::to_string(i);
         if (!task.grid && !task.grid_area) continue;  // check_scene refuses it
-        const Area area = task.grid ? Area{task.grid->origin, task.grid->u, task.grid->v}
-                                    : Area{task.grid_area->origin, task.grid_area->u,
-                                           task.grid_area->v};
+        const Area area = task.grid
+                              ? Area{task.grid->origin, task.grid->u, task.grid->v}
+                              : Area{task.grid_area->origin, task.grid_area->u, task.grid_area->v};
         std::optional<FloorPlan> plan;
         double height = 0;
         if (task.workplane) {
@@ -118,7 +120,8 @@ std::vector<Problem> expand_task_areas(Scene& scene, const SceneLimits& limits) 
         const AppliedRequirement applied = apply_requirement(*task.requirement);
 
         SensorGrid grid = band_grid(area, kBandM / m, m, plan ? &*plan : nullptr, height);
-        if (grid.points.size() > limits.max_sensor_points - std::min(total, limits.max_sensor_points)) {
+        if (grid.points.size() >
+            limits.max_sensor_points - std::min(total, limits.max_sensor_points)) {
             problems.push_back({pointer + "/requirement",
                                 "the surrounding band's " + std::to_string(grid.points.size()) +
                                     " points take the scene over the limit of " +
@@ -133,8 +136,8 @@ std::vector<Problem> expand_task_areas(Scene& scene, const SceneLimits& limits) 
             band.normal = task.normal;
             band.points = grid.points;
             band.grid = std::move(grid);
-            band.requirement = Requirement{std::nullopt, around.em_lx, around.u0, std::nullopt,
-                                           std::nullopt};
+            band.requirement =
+                Requirement{std::nullopt, around.em_lx, around.u0, std::nullopt, std::nullopt};
             band.surrounding_of = i;
             scene.sensors.push_back(std::move(band));
         }

@@ -49,8 +49,8 @@ constexpr double kUgrErrorTarget = 0.2;
 // groups has one component, of every source). The eyes are few and need their own number of
 // ray sets: their light is all reflected, noisier than a sensor's.
 struct ComponentLight {
-    ComponentLight(const PreparedScene& scene, const ElementMesh& mesh, const Visibility& visibility,
-                   int which, double factor, std::uint64_t seed)
+    ComponentLight(const PreparedScene& scene, const ElementMesh& mesh,
+                   const Visibility& visibility, int which, double factor, std::uint64_t seed)
         : sources(scene, visibility.epsilon(), which),
           field(scene, mesh, seed),
           gather(scene, mesh, sources, visibility, seed),
@@ -82,13 +82,14 @@ struct MonteCarloLevel {
         const std::vector<LightComponent>& components = scene.components.components;
         if (components.size() <= 1) {
             const double mf = components.empty() ? 1.0 : components.front().maintenance_factor;
-            lights.push_back(std::make_unique<ComponentLight>(scene, mesh, *visibility, -1, mf, seed));
+            lights.push_back(
+                std::make_unique<ComponentLight>(scene, mesh, *visibility, -1, mf, seed));
             return;
         }
         for (std::size_t c = 0; c < components.size(); ++c) {
-            lights.push_back(std::make_unique<ComponentLight>(
-                scene, mesh, *visibility, static_cast<int>(c), components[c].maintenance_factor,
-                seed));
+            lights.push_back(
+                std::make_unique<ComponentLight>(scene, mesh, *visibility, static_cast<int>(c),
+                                                 components[c].maintenance_factor, seed));
         }
     }
     ElementMesh mesh;
@@ -343,17 +344,15 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             error = maintained_error(*level);
             reported = std::min(reported, error.total);
             estimating.seconds += seconds_since(stage_start);
-            snapshots_.offer(
-                std::make_shared<const SolvedMesh>(
-                    display_mesh(scene, level->mesh, solved_sides(scene, level->mesh, *level))),
-                mesh_version,
-                std::make_shared<const std::vector<SensorResult>>(
-                    sensor_results(scene, maintained_values(*level, sensor_points))));
+            snapshots_.offer(std::make_shared<const SolvedMesh>(display_mesh(
+                                 scene, level->mesh, solved_sides(scene, level->mesh, *level))),
+                             mesh_version,
+                             std::make_shared<const std::vector<SensorResult>>(
+                                 sensor_results(scene, maintained_values(*level, sensor_points))));
             report("estimate", 0.9, rounds + 1, reported);
             // A round cut short by a cancel or the time limit has not earned `converged`.
-            const bool complete =
-                std::all_of(level->lights.begin(), level->lights.end(),
-                            [](const auto& light) { return light->complete(); });
+            const bool complete = std::all_of(level->lights.begin(), level->lights.end(),
+                                              [](const auto& light) { return light->complete(); });
             if (!complete || should_stop()) {
                 stopped = true;
                 break;
@@ -366,9 +365,8 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             const double bias_target = kTargetShare * options_.tolerance;
             const bool biased =
                 std::any_of(level->lights.begin(), level->lights.end(), [&](const auto& light) {
-                    return !done(*light) &&
-                           !(light->error.parts.discretisation < bias_target &&
-                             light->eye_error.parts.discretisation < bias_target);
+                    return !done(*light) && !(light->error.parts.discretisation < bias_target &&
+                                              light->eye_error.parts.discretisation < bias_target);
                 });
             if (biased) {
                 refine = refinements < kMaxRefinements;
@@ -391,7 +389,8 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 if (done(*light)) continue;
                 const SampleBudget now{light->field.photons(), light->gather.sets()};
                 if (!(light->reported <= tolerance) || scene.observers.empty()) {
-                    light->budget = next_budget(light->error, now, bias_target, per_photon, per_set);
+                    light->budget =
+                        next_budget(light->error, now, bias_target, per_photon, per_set);
                 }
                 if (!(light->eye_reported <= tolerance)) {
                     const SampleBudget eyes =
@@ -406,8 +405,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         // The finer level starts afresh; its noise needs the samples the coarser one had.
         carried.clear();
         for (const auto& light : level->lights) {
-            carried.push_back(
-                {{light->field.photons(), light->gather.sets()}, light->eyes.sets()});
+            carried.push_back({{light->field.photons(), light->gather.sets()}, light->eyes.sets()});
         }
         reported = std::numeric_limits<double>::infinity();
     }
