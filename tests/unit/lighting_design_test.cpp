@@ -304,6 +304,30 @@ TEST(Glare, ALuminaireBehindTheObserverAddsNothing) {
     EXPECT_GT(r.observers[0].ugr, 10);
 }
 
+// The radiosity methods read the background from rays into their solved mesh, the Monte Carlo
+// method gathers it at the eye: the same room gives the same UGR either way, and a scene with
+// observers and no sensors is rated too.
+TEST(Glare, RadiosityMethodsRateItFromTheSolvedMesh) {
+    Json doc = office();
+    doc["observers"] = {{{"name", "eye"}, {"position", {2, 0.5, 1.2}}, {"view", {0, 1, 0}}}};
+    const Result mc = solved(doc, "monte-carlo");
+    ASSERT_EQ(mc.status, SolveStatus::converged) << testing::describe(mc);
+    doc.erase("sensors");
+    for (const char* method : {"hierarchical", "direct"}) {
+        SCOPED_TRACE(method);
+        const Result r = solved(doc, method);
+        ASSERT_EQ(r.status, SolveStatus::converged) << testing::describe(r);
+        ASSERT_EQ(r.observers.size(), 1u);
+        const ObserverResult& o = r.observers[0];
+        EXPECT_NEAR(o.glare_sum, mc.observers[0].glare_sum, 1e-9 * o.glare_sum);
+        EXPECT_NEAR(o.background_luminance, mc.observers[0].background_luminance,
+                    0.05 * o.background_luminance);
+        EXPECT_NEAR(o.ugr, mc.observers[0].ugr, 0.3);
+        EXPECT_GT(o.ugr_error_estimate, 0);
+        EXPECT_LT(o.ugr_error_estimate, 0.2);
+    }
+}
+
 TEST(Glare, ALuminaireWithoutALuminousAreaIsRefusedWhereGlareIsRated) {
     Json doc = office();
     doc["luminaires"][0].erase("luminous_area");

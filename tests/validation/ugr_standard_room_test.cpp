@@ -39,28 +39,33 @@ std::string panel_ies() {
     return ies + "\n";
 }
 
-std::string scene_json() {
+std::string scene_json(const std::string& method) {
     auto polygon = [](const char* name, const char* material, const std::string& points) {
         return std::string(R"({"name": ")") + name + R"(", "material": ")" + material +
                R"(", "polygon": )" + points + "}";
     };
     const std::string x = std::to_string(kX), y = std::to_string(kY), h = std::to_string(kH);
     std::string surfaces =
-        polygon("floor", "floor", "[[0,0,0],[" + x + ",0,0],[" + x + "," + y + ",0],[0," + y + ",0]]") +
+        polygon("floor", "floor",
+                "[[0,0,0],[" + x + ",0,0],[" + x + "," + y + ",0],[0," + y + ",0]]") +
         "," +
         polygon("ceiling", "ceiling",
                 "[[0,0," + h + "],[0," + y + "," + h + "],[" + x + "," + y + "," + h + "],[" + x +
                     ",0," + h + "]]") +
-        "," + polygon("south", "wall", "[[0,0,0],[0,0," + h + "],[" + x + ",0," + h + "],[" + x + ",0,0]]") +
+        "," +
+        polygon("south", "wall",
+                "[[0,0,0],[0,0," + h + "],[" + x + ",0," + h + "],[" + x + ",0,0]]") +
         "," +
         polygon("north", "wall",
                 "[[0," + y + ",0],[" + x + "," + y + ",0],[" + x + "," + y + "," + h + "],[0," + y +
                     "," + h + "]]") +
-        "," + polygon("west", "wall", "[[0,0,0],[0," + y + ",0],[0," + y + "," + h + "],[0,0," + h + "]]") +
+        "," +
+        polygon("west", "wall",
+                "[[0,0,0],[0," + y + ",0],[0," + y + "," + h + "],[0,0," + h + "]]") +
         "," +
         polygon("east", "wall",
-                "[[" + x + ",0,0],[" + x + ",0," + h + "],[" + x + "," + y + "," + h + "],[" + x + "," +
-                    y + ",0]]");
+                "[[" + x + ",0,0],[" + x + ",0," + h + "],[" + x + "," + y + "," + h + "],[" + x +
+                    "," + y + ",0]]");
     std::string luminaires;
     for (double lx = kH / 2; lx < kX; lx += kH) {
         for (double ly = kH / 2; ly < kY; ly += kH) {
@@ -68,7 +73,8 @@ std::string scene_json() {
             luminaires += R"({"name": "L", "position": [)" + std::to_string(lx) + "," +
                           std::to_string(ly) + "," + std::to_string(kLuminaireZ) +
                           R"(], "distribution": {"ies": ")";
-            for (const char c : panel_ies()) luminaires += c == '\n' ? std::string("\\n") : std::string(1, c);
+            for (const char c : panel_ies())
+                luminaires += c == '\n' ? std::string("\\n") : std::string(1, c);
             luminaires += R"("}})";
         }
     }
@@ -80,9 +86,10 @@ std::string scene_json() {
       "sensors": [{"name": "reference plane", "normal": [0, 0, 1],
                    "grid": {"origin": [0.5, 0.5, 0.01], "u": [7, 0, 0], "v": [0, 15, 0],
                             "nu": 7, "nv": 15}}],
-      "observers": [{"name": "wall middle", "position": [4, )" + std::to_string(kEye) + ", " +
-           std::to_string(kEye) + R"(], "view": [0, 1, 0]}],
-      "settings": {"tolerance": 0.02}})";
+      "observers": [{"name": "wall middle", "position": [4, )" +
+           std::to_string(kEye) + ", " + std::to_string(kEye) + R"(], "view": [0, 1, 0]}],
+      "settings": {"tolerance": 0.02, "method": ")" +
+           method + R"("}})";
 }
 
 // CIE 117's fit of the Luckiesh–Guth position index, written out again here.
@@ -135,7 +142,7 @@ std::array<double, 3> transfer_factors() {
     return out;
 }
 
-TEST(UgrStandardRoom, TransferFactorsAreCie190s) {
+TEST(UgrStandardRoomTable, TransferFactorsAreCie190s) {
     // CIE 190:2010 Table 5, k = 2.67, reflectances 0.7 / 0.5 / 0.2: 0.115, 0.211, 0.307.
     const auto t = transfer_factors();
     EXPECT_NEAR(t[0], 0.115, 0.0005);
@@ -143,8 +150,12 @@ TEST(UgrStandardRoom, TransferFactorsAreCie190s) {
     EXPECT_NEAR(t[2], 0.307, 0.0005);
 }
 
-TEST(UgrStandardRoom, AgreesWithTheTabularMethodWithinOneUnit) {
-    const proto::ParseOutcome outcome = proto::parse_scene(scene_json());
+// The Monte Carlo method gathers the background at the eye; the radiosity methods cast rays from
+// the eye into their solved mesh.
+class UgrStandardRoom : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(UgrStandardRoom, AgreesWithTheTabularMethodWithinOneUnit) {
+    const proto::ParseOutcome outcome = proto::parse_scene(scene_json(GetParam()));
     ASSERT_TRUE(outcome.ok()) << outcome.problems[0].pointer << ": " << outcome.problems[0].message;
     const Result r = solve(*outcome.scene, options_from(outcome.scene->settings));
     ASSERT_EQ(r.status, SolveStatus::converged) << testing::describe(r);
@@ -182,7 +193,16 @@ TEST(UgrStandardRoom, AgreesWithTheTabularMethodWithinOneUnit) {
     EXPECT_NEAR(o.ugr, tabular, 1.0) << "background " << o.background_luminance << " cd/m², the "
                                      << "tabular method's " << lb;
     EXPECT_LT(o.ugr_error_estimate, 0.25);
+    RecordProperty("ugr", std::to_string(o.ugr));
+    RecordProperty("tabular_ugr", std::to_string(tabular));
 }
+
+std::string method_name(const ::testing::TestParamInfo<const char*>& param) {
+    return std::string(param.param) == "monte-carlo" ? "monte_carlo" : param.param;
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, UgrStandardRoom, ::testing::Values("monte-carlo", "hierarchical"),
+                         method_name);
 
 }  // namespace
 }  // namespace radiant

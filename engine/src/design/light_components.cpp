@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "design/requirements.h"
-
 namespace radiant {
 namespace {
 
@@ -25,7 +23,7 @@ struct Assigner {
         const int group = group_of(d);
         auto& ra = out.group_ra[static_cast<std::size_t>(group)];
         ra = ra && d.ra ? std::optional<double>(std::min(*ra, *d.ra)) : std::nullopt;
-        const char* from = d.maintenance_factor          ? (luminaire ? "luminaire" : "material")
+        const char* from = d.maintenance_factor ? (luminaire ? "luminaire" : "material")
                            : scene.settings.maintenance_factor ? "settings"
                                                                : "default";
         const double factor =
@@ -35,10 +33,10 @@ struct Assigner {
         });
         if (use == out.uses.end()) use = out.uses.insert(out.uses.end(), {factor, from, 0, 0});
         ++(luminaire ? use->luminaires : use->materials);
-        const auto it =
-            std::find_if(out.components.begin(), out.components.end(), [&](const LightComponent& c) {
-                return c.group == group && c.maintenance_factor == factor;
-            });
+        const auto it = std::find_if(out.components.begin(), out.components.end(),
+                                     [&](const LightComponent& c) {
+                                         return c.group == group && c.maintenance_factor == factor;
+                                     });
         if (it != out.components.end()) return static_cast<int>(it - out.components.begin());
         out.components.push_back({group, factor});
         return static_cast<int>(out.components.size()) - 1;
@@ -53,8 +51,8 @@ LightComponents light_components(const Scene& scene) {
     for (const Luminaire& l : scene.luminaires)
         out.luminaire_component.push_back(assign.component_of(l.design, true));
     for (const Material& m : scene.materials) {
-        out.material_component.push_back(
-            m.emission ? assign.component_of(m.emission->design, false) : -1);
+        out.material_component.push_back(m.emission ? assign.component_of(m.emission->design, false)
+                                                    : -1);
     }
     return out;
 }
@@ -70,10 +68,6 @@ std::string monte_carlo_only_reason(const Scene& scene) {
                    "\" is measured only by method \"monte-carlo\"";
         }
     }
-    bool ugr = !scene.observers.empty();
-    for (const SensorSet& s : scene.sensors)
-        ugr = ugr || (s.requirement && apply_requirement(*s.requirement).ugr_l);
-    if (ugr) return "UGR observers are computed only by method \"monte-carlo\"";
     return {};
 }
 

@@ -34,8 +34,8 @@ struct LightComponents {
 /// The components of a scene that passed check_scene(). Pure.
 LightComponents light_components(const Scene& scene);
 
-/// Why `scene` can be solved only by the Monte Carlo method (several components, a sensor kind
-/// other than planar, UGR observers or a UGR requirement), or empty when any method will do.
+/// Why `scene` can be solved only by the Monte Carlo method (several components, or a sensor
+/// kind other than planar), or empty when any method will do.
 std::string monte_carlo_only_reason(const Scene& scene);
 
 }  // namespace radiant

@@ -16,9 +16,7 @@ namespace {
 // Guth position index and the vertical kinds are defined about the vertical).
 constexpr double kMinHorizontal = 1e-6;
 
-bool horizontal_part(const Vec3& v) {
-    return std::hypot(v.x, v.y) > kMinHorizontal * length(v);
-}
+bool horizontal_part(const Vec3& v) { return std::hypot(v.x, v.y) > kMinHorizontal * length(v); }
 
 class DesignChecker {
 public:
@@ -29,7 +27,8 @@ public:
         for (std::size_t i = 0; i < scene_.luminaires.size(); ++i)
             source(scene_.luminaires[i].design, at("/luminaires", i));
         for (const Material& m : scene_.materials) {
-            if (m.emission) source(m.emission->design, "/materials/" + escape_token(m.name) + "/emission");
+            if (m.emission)
+                source(m.emission->design, "/materials/" + escape_token(m.name) + "/emission");
         }
         if (scene_.settings.maintenance_factor)
             factor(*scene_.settings.maintenance_factor, "/settings/maintenance_factor");
@@ -76,8 +75,8 @@ private:
             if (l.luminous_area) {
                 const LuminousShape& a = *l.luminous_area;
                 const std::string p = base + "/luminous_area";
-                for (const auto& [key, value] : {std::pair{a.round ? "diameter" : "length", a.length},
-                                                 {"width", a.width}}) {
+                for (const auto& [key, value] :
+                     {std::pair{a.round ? "diameter" : "length", a.length}, {"width", a.width}}) {
                     if (!(std::isfinite(value) && value > 0))
                         report(p + (a.round ? "/diameter" : std::string("/") + key),
                                std::string(key) + " must be a finite number > 0");
@@ -88,11 +87,11 @@ private:
             } else if (glare && l.distribution != Distribution::photometric) {
                 // A photometric file that declares a point source gets CIE 147's small-source
                 // form; a made-up distribution has no size to rate at all.
-                report(base, "UGR needs the luminaire's luminous area: give luminous_area (an " +
-                                 std::string(l.distribution == Distribution::isotropic
-                                                 ? "isotropic"
-                                                 : "lambertian") +
-                                 " luminaire has no photometric data to take it from)");
+                report(base,
+                       "UGR needs the luminaire's luminous area: give luminous_area (an " +
+                           std::string(l.distribution == Distribution::isotropic ? "isotropic"
+                                                                                 : "lambertian") +
+                           " luminaire has no photometric data to take it from)");
             }
         }
     }
@@ -101,14 +100,16 @@ private:
         const Requirement& r = *s.requirement;
         const std::string p = base + "/requirement";
         if (!s.grid_area && !s.workplane && !s.grid) {
-            report(p, "a requirement applies to a task area: give the sensor set a grid or "
-                      "workplane");
+            report(p,
+                   "a requirement applies to a task area: give the sensor set a grid or "
+                   "workplane");
         }
         if (r.activity && !find_activity(*r.activity)) {
             std::string known;
             for (const Activity& a : en12464_activities())
                 known += (known.empty() ? "" : ", ") + a.reference;
-            report(p + "/activity", "unknown activity \"" + *r.activity + "\" (known: " + known + ")");
+            report(p + "/activity",
+                   "unknown activity \"" + *r.activity + "\" (known: " + known + ")");
         }
         if (!r.activity && !r.em_lx && !r.u0 && !r.ugr_l && !r.ra)
             report(p, "a requirement needs an activity or at least one of em_lx, u0, ugr_l, ra");
@@ -141,10 +142,6 @@ private:
     }
 
     void observers() {
-        if (!scene_.observers.empty() && scene_.sensors.empty()) {
-            report("/observers", "observers need a sensor set: the Monte Carlo method that rates "
-                                 "their glare measures its error at the sensors");
-        }
         std::set<std::string> names;
         for (std::size_t i = 0; i < scene_.observers.size(); ++i) {
             const Observer& o = scene_.observers[i];
@@ -164,12 +161,12 @@ private:
                        "has a horizontal part");
             }
             if (o.task) {
-                const bool known =
-                    std::any_of(scene_.sensors.begin(), scene_.sensors.end(),
-                                [&](const SensorSet& s) { return s.name == *o.task && s.requirement; });
+                const bool known = std::any_of(
+                    scene_.sensors.begin(), scene_.sensors.end(),
+                    [&](const SensorSet& s) { return s.name == *o.task && s.requirement; });
                 if (!known)
-                    report(base + "/task", "no sensor set with a requirement is named \"" +
-                                               *o.task + "\"");
+                    report(base + "/task",
+                           "no sensor set with a requirement is named \"" + *o.task + "\"");
             }
         }
     }

@@ -286,7 +286,8 @@ Result Pipeline::run() {
     }
     const std::size_t polygons = prepared.scene.pieces.size();
     std::string method = options_.method;
-    // Groups, sensor kinds and observers need the Monte Carlo method (docs/lighting-design.md).
+    // Groups, several maintenance factors and non-planar sensor kinds need the Monte Carlo
+    // method (docs/lighting-design.md).
     const std::string monte_carlo_only = monte_carlo_only_reason(scene_);
     if (!monte_carlo_only.empty() && method != "auto" && method != "monte-carlo") {
         result.error = monte_carlo_only + ", not \"" + method + "\"";
@@ -299,7 +300,6 @@ Result Pipeline::run() {
     // walls stays dense: its surfaces are exact there, and the photons' surface averages carry
     // noise that no estimate covers (docs/monte-carlo.md).
     const bool has_sensors =
-        !prepared.scene.observers.empty() ||
         std::any_of(prepared.scene.sensors.begin(), prepared.scene.sensors.end(),
                     [](const PreparedSensorSet& s) { return !s.points.empty(); });
     if (method == "auto" && polygons > kMaxAutoDensePolygons)
