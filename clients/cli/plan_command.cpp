@@ -9,6 +9,7 @@
 #include "exit_codes.h"
 #include "local_solve.h"
 #include "picture/sensor_plan.h"
+#include "task_area_marks.h"
 
 namespace radiant::cli {
 namespace {
@@ -46,6 +47,7 @@ int run_plan(const PlanArgs& args) {
     plan.normal = set->normal;
     plan.lux = result.sensors[index].illuminance;
     plan.max_lux = args.max_lux;
+    add_task_area_marks(*scene, result, index, plan);
     write_file_atomically(args.out, draw_sensor_plan(plan, args.size).png());
     return kExitOk;
 }

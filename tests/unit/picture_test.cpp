@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -84,7 +85,7 @@ protected:
         return picture;
     }
 
-    const std::string scene_ = std::string(RADIANT_TEST_DATA) + "/pictures/lamp-room.json";
+    std::string scene_ = std::string(RADIANT_TEST_DATA) + "/pictures/lamp-room.json";
     fs::path dir_;
 };
 
@@ -166,6 +167,59 @@ TEST_F(Pictures, PlanMapsTheGridSymmetricallyWithTheHottestCellsInTheMiddle) {
         }
     }
     EXPECT_LT(hue(sample(3.2, 3.2)), hue(sample(0.2, 0.2)) - 30);
+}
+
+/// Rows from the top that hold a pixel of exactly this colour.
+std::vector<int> rows_with(const Picture& p, const std::array<unsigned char, 3>& colour) {
+    std::vector<int> rows;
+    for (int y = 0; y < p.height; ++y) {
+        for (int x = 0; x < p.width; ++x) {
+            if (std::equal(colour.begin(), colour.end(), p.at(x, y))) {
+                rows.push_back(y);
+                break;
+            }
+        }
+    }
+    return rows;
+}
+
+/// The longest horizontal run of pixels of exactly this colour.
+int longest_run(const Picture& p, const std::array<unsigned char, 3>& colour) {
+    int longest = 0;
+    for (int y = 0; y < p.height; ++y) {
+        int run = 0;
+        for (int x = 0; x < p.width; ++x) {
+            run = std::equal(colour.begin(), colour.end(), p.at(x, y)) ? run + 1 : 0;
+            longest = std::max(longest, run);
+        }
+    }
+    return longest;
+}
+
+// The plan's colours for a passed and a failed check, the task area's outline and the band's
+// cell edges (clients/cli/picture/sensor_plan.cpp).
+constexpr std::array<unsigned char, 3> kPass{0, 130, 40}, kFail{200, 20, 20}, kInk{20, 20, 20},
+    kBandEdge{120, 120, 120};
+
+// A 2 × 2 m desk whose requirement asks for Ēm ≥ 1 lx (passed) and U₀ ≥ 0.99 (failed): the
+// verdict is a red line, then the checks in green and red; the band hatched around the desk
+// widens the map to 3 m, of which the desk's black outline spans two thirds.
+TEST_F(Pictures, PlanOfATaskAreaOutlinesItHatchesItsBandAndColoursEveryCheck) {
+    const Picture plain = make("plan --size 400", "plain.png");
+    EXPECT_TRUE(rows_with(plain, kPass).empty());
+    EXPECT_TRUE(rows_with(plain, kFail).empty());
+    EXPECT_TRUE(rows_with(plain, kBandEdge).empty());
+
+    scene_ = std::string(RADIANT_TEST_DATA) + "/pictures/task-room.json";
+    const Picture p = make("plan --size 400", "task.png");
+    const std::vector<int> pass = rows_with(p, kPass), fail = rows_with(p, kFail);
+    ASSERT_FALSE(pass.empty());
+    ASSERT_FALSE(fail.empty());
+    EXPECT_LT(fail.front(), pass.front());  // the verdict first: failed
+    EXPECT_LT(pass.front(), fail.back());   // Ēm passed above U₀ failed
+    EXPECT_FALSE(rows_with(p, kBandEdge).empty());
+    const int outline = longest_run(p, kInk);
+    EXPECT_NEAR(outline, 400 * 2.0 / 3.0, 12);
 }
 
 TEST_F(Pictures, ACameraLookingAtItsOwnEyeIsRefused) {

@@ -14,6 +14,8 @@ namespace {
 
 constexpr Rgb kPaper{255, 255, 255};
 constexpr Rgb kInk{20, 20, 20};
+constexpr Rgb kPass{0, 130, 40}, kFail{200, 20, 20}, kUnknown{110, 110, 110};
+constexpr Rgb kBandEdge{120, 120, 120};
 
 /// An in-plane basis seen from above the plane: `right` as close to +x as the plane allows.
 struct PlaneAxes {
@@ -52,58 +54,126 @@ bool dark(Rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b < 110; }
 
 Image draw_sensor_plan(const SensorPlan& plan, int map_pixels) {
     if (plan.points.empty()) throw std::invalid_argument("the sensor set has no points");
-    if (plan.points.size() != plan.lux.size())
+    if (plan.points.size() != plan.lux.size() || plan.band_points.size() != plan.band_lux.size())
         throw std::invalid_argument("one illuminance value per sensor point is needed");
     const PlaneAxes axes = plane_axes(plan.normal);
-    std::vector<double> u, v;
-    for (const Vec3& p : plan.points) {
-        u.push_back(dot(p, axes.right));
-        v.push_back(dot(p, axes.up));
-    }
+    const auto flat = [&](const std::vector<Vec3>& points, std::vector<double>& u,
+                          std::vector<double>& v) {
+        for (const Vec3& p : points) {
+            u.push_back(dot(p, axes.right));
+            v.push_back(dot(p, axes.up));
+        }
+    };
+    std::vector<double> u, v, band_u, band_v, eye_u, eye_v;
+    flat(plan.points, u, v);
+    flat(plan.band_points, band_u, band_v);
+    flat(plan.observers, eye_u, eye_v);
     const double cell = typical_spacing(u, v);
-    const auto [u_lo, u_hi] = std::minmax_element(u.begin(), u.end());
-    const auto [v_lo, v_hi] = std::minmax_element(v.begin(), v.end());
-    const double extent_u = *u_hi - *u_lo + cell;
-    const double extent_v = *v_hi - *v_lo + cell;
+    const double band_cell = band_u.empty() ? cell : typical_spacing(band_u, band_v);
+    // The map spans the points, the band and the eyes, each cell whole.
+    double u_lo = 1e300, u_hi = -1e300, v_lo = 1e300, v_hi = -1e300;
+    const auto span = [&](const std::vector<double>& us, const std::vector<double>& vs,
+                          double half) {
+        for (std::size_t i = 0; i < us.size(); ++i) {
+            u_lo = std::min(u_lo, us[i] - half), u_hi = std::max(u_hi, us[i] + half);
+            v_lo = std::min(v_lo, vs[i] - half), v_hi = std::max(v_hi, vs[i] + half);
+        }
+    };
+    span(u, v, 0.5 * cell);
+    span(band_u, band_v, 0.5 * band_cell);
+    span(eye_u, eye_v, 0.25 * cell);
+    const double extent_u = u_hi - u_lo, extent_v = v_hi - v_lo;
     const double pixels_per_unit = map_pixels / std::max(extent_u, extent_v);
     const int map_w = std::max(1, static_cast<int>(std::lround(extent_u * pixels_per_unit)));
     const int map_h = std::max(1, static_cast<int>(std::lround(extent_v * pixels_per_unit)));
 
     const int scale = std::max(1, map_pixels / 300);
     const int margin = 10 * scale;
-    const int header = 2 * 12 * scale;
-    const double max = plan.max_lux > 0
-                           ? plan.max_lux
-                           : round_scale_max(*std::max_element(plan.lux.begin(), plan.lux.end()));
-    Image image(map_w + legend_width(max, scale) + 3 * margin,
-                std::max(map_h, 150 * scale) + header + 2 * margin, kPaper);
-
+    const int line = 12 * scale;
+    const int header = (2 + static_cast<int>(plan.verdicts.size())) * line;
+    double largest = *std::max_element(plan.lux.begin(), plan.lux.end());
+    for (const double e : plan.band_lux) largest = std::max(largest, e);
+    const double max = plan.max_lux > 0 ? plan.max_lux : round_scale_max(largest);
     const double sum = std::accumulate(plan.lux.begin(), plan.lux.end(), 0.0);
     const auto [lux_lo, lux_hi] = std::minmax_element(plan.lux.begin(), plan.lux.end());
     const double average = sum / static_cast<double>(plan.lux.size());
     const auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+    const std::string metrics = "Eavg " + short_number(average) + " lx   Emin " +
+                                short_number(*lux_lo) + "   Emax " + short_number(*lux_hi) +
+                                "   U0 " + short_number(ratio(*lux_lo, average)) + "   Ud " +
+                                short_number(ratio(*lux_lo, *lux_hi));
+    // Wide enough for the map and its legend, and for every line of text.
+    int width = map_w + legend_width(max, scale) + 3 * margin;
+    for (const std::string& text : {plan.title, metrics})
+        width = std::max(width, text_width(text, scale) + 2 * margin);
+    for (const PlanVerdict& verdict : plan.verdicts)
+        width = std::max(width, text_width(verdict.text, scale) + 2 * margin);
+    Image image(width, std::max(map_h, 150 * scale) + header + 2 * margin, kPaper);
     draw_text(image, margin, margin, plan.title, kInk, scale);
-    draw_text(image, margin, margin + 12 * scale,
-              "Eavg " + short_number(average) + " lx   Emin " + short_number(*lux_lo) + "   Emax " +
-                  short_number(*lux_hi) + "   U0 " + short_number(ratio(*lux_lo, average)) +
-                  "   Ud " + short_number(ratio(*lux_lo, *lux_hi)),
-              kInk, scale);
+    draw_text(image, margin, margin + line, metrics, kInk, scale);
+    for (std::size_t k = 0; k < plan.verdicts.size(); ++k) {
+        const PlanVerdict& verdict = plan.verdicts[k];
+        draw_text(image, margin, margin + static_cast<int>(k + 2) * line, verdict.text,
+                  verdict.mark == PlanVerdict::Mark::pass   ? kPass
+                  : verdict.mark == PlanVerdict::Mark::fail ? kFail
+                                                            : kUnknown,
+                  scale);
+    }
 
     const int top = margin + header;
-    const int half_cell = std::max(1, static_cast<int>(std::lround(0.5 * cell * pixels_per_unit)));
-    for (std::size_t i = 0; i < plan.points.size(); ++i) {
-        const int cx =
-            margin + static_cast<int>(std::lround((u[i] - *u_lo + 0.5 * cell) * pixels_per_unit));
-        // Image rows grow downwards; the plane's `up` axis points up on the page.
-        const int cy =
-            top + static_cast<int>(std::lround((*v_hi - v[i] + 0.5 * cell) * pixels_per_unit));
-        const Rgb colour = false_colour(plan.lux[i], max);
-        image.fill(cx - half_cell, cy - half_cell, cx + half_cell, cy + half_cell, colour);
-        const std::string label = short_number(plan.lux[i]);
-        if (text_width(label, scale) + 4 * scale <= 2 * half_cell && 10 * scale <= 2 * half_cell) {
-            draw_text(image, cx - text_width(label, scale) / 2, cy - 3 * scale, label,
-                      dark(colour) ? kPaper : kInk, scale);
+    // Image rows grow downwards; the plane's `up` axis points up on the page.
+    const auto px = [&](double pu) {
+        return margin + static_cast<int>(std::lround((pu - u_lo) * pixels_per_unit));
+    };
+    const auto py = [&](double pv) {
+        return top + static_cast<int>(std::lround((v_hi - pv) * pixels_per_unit));
+    };
+    const auto cells = [&](const std::vector<double>& us, const std::vector<double>& vs,
+                           const std::vector<double>& lux, double pitch, bool band) {
+        const int half = std::max(1, static_cast<int>(std::lround(0.5 * pitch * pixels_per_unit)));
+        for (std::size_t i = 0; i < us.size(); ++i) {
+            const int cx = px(us[i]), cy = py(vs[i]);
+            const Rgb colour = false_colour(lux[i], max);
+            image.fill(cx - half, cy - half, cx + half, cy + half, colour);
+            if (band) {
+                // Hatched: the band is the task's surrounding, not the task.
+                const int period = std::max(4, 3 * scale);
+                for (int y = std::max(0, cy - half); y < std::min(image.height(), cy + half); ++y) {
+                    for (int x = std::max(0, cx - half); x < std::min(image.width(), cx + half);
+                         ++x) {
+                        if ((x + y) % period == 0) image.set(x, y, kPaper);
+                    }
+                }
+                image.outline(cx - half, cy - half, cx + half, cy + half, kBandEdge);
+            }
+            const std::string label = short_number(lux[i]);
+            if (text_width(label, scale) + 4 * scale <= 2 * half && 10 * scale <= 2 * half) {
+                draw_text(image, cx - text_width(label, scale) / 2, cy - 3 * scale, label,
+                          dark(colour) && !band ? kPaper : kInk, scale);
+            }
         }
+    };
+    cells(u, v, plan.lux, cell, false);
+    cells(band_u, band_v, plan.band_lux, band_cell, true);
+    if (plan.task_area) {
+        // The task area's outline, two pixels per scale step wide.
+        const auto& [origin, su, sv] = *plan.task_area;
+        const Vec3 corners[] = {origin, origin + su, origin + su + sv, origin + sv};
+        for (int k = 0; k < 4; ++k) {
+            const Vec3& a = corners[k];
+            const Vec3& b = corners[(k + 1) % 4];
+            const int steps = 4 * map_pixels;
+            for (int t = 0; t <= steps; ++t) {
+                const Vec3 p = a + (b - a) * (static_cast<double>(t) / steps);
+                const int x = px(dot(p, axes.right)), y = py(dot(p, axes.up));
+                image.fill(x - scale, y - scale, x + scale + 1, y + scale + 1, kInk);
+            }
+        }
+    }
+    for (std::size_t i = 0; i < eye_u.size(); ++i) {
+        const int x = px(eye_u[i]), y = py(eye_v[i]), r = 4 * scale;
+        image.outline(x - r, y - r, x + r, y + r, kInk);
+        image.fill(x - scale, y - scale, x + scale, y + scale, kInk);
     }
     draw_legend(image, margin + map_w + 2 * margin, top, image.height() - top - margin, max, "lux",
                 scale);
