@@ -367,6 +367,51 @@ double rms_relative_difference(const std::vector<double>& a, const std::vector<d
     return std::sqrt(sum / static_cast<double>(a.size())) / (mean / static_cast<double>(a.size()));
 }
 
+// Each light component is solved apart and each group and light scene kept per sensor point:
+// their counts are limited before any work, the excess pointed at.
+TEST(LightScenes, LimitsAreEnforcedOnTheTotalsWithTheirPointers) {
+    const auto refused = [](const Json& doc, const SceneLimits& limits) {
+        proto::ParseLimits parse;
+        parse.scene = limits;
+        return proto::parse_scene(doc.dump(), parse).problems;
+    };
+    Json doc = two_groups();  // two groups of one source each, two light scenes, 36 points
+    EXPECT_TRUE(refused(doc, {}).empty());
+    SceneLimits limits;
+    limits.max_light_components = 1;
+    // The panel's material opens the second component.
+    EXPECT_TRUE(has_pointer(refused(doc, limits), "/materials/glow/emission"));
+    limits = {};
+    limits.max_light_scenes = 1;
+    EXPECT_TRUE(has_pointer(refused(doc, limits), "/light_scenes"));
+    limits = {};
+    limits.max_observers = 0;
+    doc["observers"] = {{{"name", "eye"}, {"position", {2, 0.5, 1.2}}, {"view", {0, 1, 0}}}};
+    EXPECT_TRUE(has_pointer(refused(doc, limits), "/observers"));
+    // 36 desk points and, from the requirement, its band: kept once and per group and scene.
+    limits = {};
+    limits.max_kept_sensor_values = 5 * 36;
+    EXPECT_TRUE(refused(doc, limits).empty());
+    doc["sensors"][0]["requirement"] = {{"em_lx", 300}};
+    const auto band = refused(doc, limits);
+    ASSERT_TRUE(has_pointer(band, "/sensors"));
+    EXPECT_NE(band[0].message.find("(1 + 2 groups + 2 light scenes)"), std::string::npos)
+        << band[0].message;
+    // A hundred thousand luminaires, each its own group: refused, quickly (sorting the sources
+    // into components by linear search took minutes).
+    Scene many = parsed(office());
+    const Luminaire downlight = many.luminaires[0];
+    many.luminaires.clear();
+    for (int i = 0; i < 100000; ++i) {
+        Luminaire l = downlight;
+        l.design.group = std::to_string(i);
+        many.luminaires.push_back(std::move(l));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_TRUE(has_pointer(check_scene(many), "/luminaires/32"));
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5);
+}
+
 TEST(LightScenes, ACombinationEqualsAFreshSolveOfTheCombinedScene) {
     const Json doc = two_groups();
     const Result r = solved(doc);
@@ -399,6 +444,49 @@ TEST(LightScenes, ACombinationEqualsAFreshSolveOfTheCombinedScene) {
     }
 }
 
+// Two luminaire groups, as in the issue: every dimming, off and full included, equals a fresh
+// solve of the room with each luminaire's flux scaled by hand.
+TEST(LightScenes, TwoLuminaireGroupsGiveAnyCombinationOfAFreshSolve) {
+    Json doc = office();
+    Json window = doc["luminaires"][0];
+    window["name"] = "W";
+    window["position"] = {1, 1, 2.9};
+    window["group"] = "window";
+    doc["luminaires"][0]["group"] = "middle";
+    doc["luminaires"].push_back(window);
+    doc["settings"]["tolerance"] = 0.01;
+    const std::pair<double, double> combinations[] = {{1, 0}, {0.25, 0.75}, {0.6, 0.1}};
+    for (const auto& [middle, side] : combinations) {
+        doc["light_scenes"].push_back(
+            {{"name", std::to_string(middle) + "/" + std::to_string(side)},
+             {"dimming", {{"middle", middle}, {"window", side}}}});
+    }
+    const Result r = solved(doc);
+    ASSERT_EQ(r.status, SolveStatus::converged) << testing::describe(r);
+    ASSERT_EQ(r.light_scenes.size(), 3u);
+    for (std::size_t k = 0; k < 3; ++k) {
+        const auto& [middle, side] = combinations[k];
+        SCOPED_TRACE(r.light_scenes[k].name);
+        Json fresh = doc;
+        fresh.erase("light_scenes");
+        fresh["luminaires"] = Json::array();
+        for (const auto& [luminaire, dimming] :
+             {std::pair{doc["luminaires"][0], middle}, {doc["luminaires"][1], side}}) {
+            if (dimming == 0) continue;  // off: as if it were not there
+            Json l = luminaire;
+            l.erase("group");
+            l["flux"] = dimming * 3000;
+            fresh["luminaires"].push_back(l);
+        }
+        const Result f = solved(fresh, "monte-carlo");
+        ASSERT_EQ(f.status, SolveStatus::converged) << testing::describe(f);
+        const double difference = rms_relative_difference(r.light_scenes[k].sensors[0].illuminance,
+                                                          f.sensors[0].illuminance);
+        EXPECT_LE(difference, r.light_scenes[k].error_estimate + f.stats.error_estimate);
+        EXPECT_LE(r.light_scenes[k].error_estimate, 0.01);
+    }
+}
+
 TEST(LightScenes, HierarchicalRefusesGroupsWithAClearError) {
     const Result r = solved(two_groups(), "hierarchical");
     EXPECT_EQ(r.status, SolveStatus::failed);
@@ -427,6 +515,13 @@ TEST(LightScenes, TheStoredResultEvaluatesAnyCombinationAgain) {
     const auto& problems = std::get<std::vector<Problem>>(bad);
     EXPECT_TRUE(has_pointer(problems, "/dimming/nope"));
     EXPECT_TRUE(has_pointer(problems, "/dimming/down"));
+    // More names than the solve has groups: one problem, however many names.
+    LightScene crowded{"crowded", {}};
+    for (int i = 0; i < 1000; ++i) crowded.dimming.emplace_back(std::to_string(i), 1);
+    const auto crowd = evaluate_light_scene(stored, crowded);
+    ASSERT_TRUE(std::holds_alternative<std::vector<Problem>>(crowd));
+    EXPECT_EQ(std::get<std::vector<Problem>>(crowd).size(), 1u);
+    EXPECT_EQ(std::get<std::vector<Problem>>(crowd)[0].pointer, "/dimming");
 }
 
 TEST(LightScenes, TenThousandSensorPointsTakeUnderFiftyMilliseconds) {

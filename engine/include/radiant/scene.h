@@ -187,6 +187,13 @@ struct SceneLimits {
     std::size_t max_vertices = 2000000;
     std::size_t max_sensor_points = 1000000;
     std::size_t max_luminaires = 100000;
+    /// Light components (group × maintenance factor): each is a photon field and a gather.
+    std::size_t max_light_components = 32;
+    std::size_t max_light_scenes = 256;
+    std::size_t max_observers = 1000;
+    /// Sensor values a result keeps: each point once, and once more per group and per light
+    /// scene when the scene has them (see check_kept_sensor_values()).
+    std::size_t max_kept_sensor_values = 20000000;
 };
 
 /// Semantic checks the JSON schema cannot express (geometry, references, ranges, finiteness).
@@ -197,6 +204,12 @@ std::vector<Problem> check_scene(const Scene& scene, const SceneLimits& limits =
 /// Problems (a floor without an upward-facing horizontal face, no point left, too many points)
 /// point at the sensor set. Thread-safe for distinct scenes.
 std::vector<Problem> expand_workplanes(Scene& scene, const SceneLimits& limits = {});
+
+/// Whether the values a result keeps per sensor point — every group's contribution and every
+/// light scene beside the main values — stay under SceneLimits::max_kept_sensor_values for the
+/// points the scene has. check_scene() calls it; call it again after expand_task_areas(), which
+/// adds points. Thread-safe; pure.
+std::vector<Problem> check_kept_sensor_values(const Scene& scene, const SceneLimits& limits = {});
 
 /// For every sensor set with a requirement (after expand_workplanes()): appends its immediate
 /// surrounding band (EN 12464-1: 0.5 m wide, its own grid, the standard's lower requirement) as

@@ -1,22 +1,31 @@
 #include "design/light_components.h"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
 
 namespace radiant {
 namespace {
 
+// Lookups by map: a scene may have up to SceneLimits::max_luminaires sources, each naming its
+// own group or factor, and check_scene() sorts them before it refuses too many components.
 struct Assigner {
     const Scene& scene;
     LightComponents& out;
+    std::map<std::string, int> group_index{};
+    std::map<std::pair<int, double>, int> component_index{};
+    std::map<std::pair<double, std::string>, std::size_t> use_index{};
 
     int group_of(const SourceDesign& d) {
         const std::string name = d.group.value_or(kDefaultGroup);
         out.named_groups = out.named_groups || d.group.has_value();
-        const auto it = std::find(out.groups.begin(), out.groups.end(), name);
-        if (it != out.groups.end()) return static_cast<int>(it - out.groups.begin());
-        out.groups.push_back(name);
-        out.group_ra.emplace_back(d.ra);
-        return static_cast<int>(out.groups.size()) - 1;
+        const auto [it, added] = group_index.try_emplace(name, static_cast<int>(out.groups.size()));
+        if (added) {
+            out.groups.push_back(name);
+            out.group_ra.emplace_back(d.ra);
+        }
+        return it->second;
     }
 
     int component_of(const SourceDesign& d, bool luminaire) {
@@ -28,18 +37,15 @@ struct Assigner {
                                                                : "default";
         const double factor =
             d.maintenance_factor.value_or(scene.settings.maintenance_factor.value_or(1.0));
-        auto use = std::find_if(out.uses.begin(), out.uses.end(), [&](const MaintenanceUse& u) {
-            return u.factor == factor && u.from == from;
-        });
-        if (use == out.uses.end()) use = out.uses.insert(out.uses.end(), {factor, from, 0, 0});
-        ++(luminaire ? use->luminaires : use->materials);
-        const auto it = std::find_if(out.components.begin(), out.components.end(),
-                                     [&](const LightComponent& c) {
-                                         return c.group == group && c.maintenance_factor == factor;
-                                     });
-        if (it != out.components.end()) return static_cast<int>(it - out.components.begin());
-        out.components.push_back({group, factor});
-        return static_cast<int>(out.components.size()) - 1;
+        // check_scene() refuses a factor that is not finite; as a key it must still order.
+        const double key = std::isfinite(factor) ? factor : -1.0;
+        const auto [use, new_use] = use_index.try_emplace({key, from}, out.uses.size());
+        if (new_use) out.uses.push_back({factor, from, 0, 0});
+        ++(luminaire ? out.uses[use->second].luminaires : out.uses[use->second].materials);
+        const auto [it, added] =
+            component_index.try_emplace({group, key}, static_cast<int>(out.components.size()));
+        if (added) out.components.push_back({group, factor});
+        return it->second;
     }
 };
 

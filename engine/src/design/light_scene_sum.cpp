@@ -109,6 +109,13 @@ std::variant<LightSceneResult, std::vector<Problem>> evaluate_light_scene(const 
                             "groups and no light scenes"});
         return problems;
     }
+    if (scene.dimming.size() > solved.groups.size()) {
+        // Every name past the groups' count is unknown: one problem, not one per name.
+        problems.push_back(
+            {"/dimming", "the light scene dims " + std::to_string(scene.dimming.size()) +
+                             " groups; the solve has " + std::to_string(solved.groups.size())});
+        return problems;
+    }
     std::vector<double> dimming(solved.groups.size(), 0.0);
     for (const auto& [name, value] : scene.dimming) {
         const auto it = std::find_if(solved.groups.begin(), solved.groups.end(),

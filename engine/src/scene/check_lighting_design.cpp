@@ -20,10 +20,12 @@ bool horizontal_part(const Vec3& v) { return std::hypot(v.x, v.y) > kMinHorizont
 
 class DesignChecker {
 public:
-    DesignChecker(const Scene& scene, std::vector<Problem>& problems)
-        : scene_(scene), problems_(problems) {}
+    DesignChecker(const Scene& scene, const SceneLimits& limits, std::vector<Problem>& problems)
+        : scene_(scene), limits_(limits), problems_(problems) {}
 
     void run() {
+        // Over a limit the other checks would cost as much as the limit saves.
+        if (!within_limits()) return;
         for (std::size_t i = 0; i < scene_.luminaires.size(); ++i)
             source(scene_.luminaires[i].design, at("/luminaires", i));
         for (const Material& m : scene_.materials) {
@@ -202,14 +204,77 @@ private:
         if (!why.empty()) report("/settings/method", why + ", not \"" + m + "\"");
     }
 
+    bool within_limits() {
+        const std::size_t problems = problems_.size();
+        const LightComponents lc = light_components(scene_);
+        if (lc.components.size() > limits_.max_light_components) {
+            // Point at the first source that opens a component over the limit.
+            const int limit = static_cast<int>(limits_.max_light_components);
+            std::string pointer = "/luminaires";
+            const auto l =
+                std::find_if(lc.luminaire_component.begin(), lc.luminaire_component.end(),
+                             [&](int c) { return c >= limit; });
+            const auto m = std::find_if(lc.material_component.begin(), lc.material_component.end(),
+                                        [&](int c) { return c >= limit; });
+            if (l != lc.luminaire_component.end()) {
+                pointer =
+                    at("/luminaires", static_cast<std::size_t>(l - lc.luminaire_component.begin()));
+            } else if (m != lc.material_component.end()) {
+                pointer =
+                    "/materials/" +
+                    escape_token(
+                        scene_
+                            .materials[static_cast<std::size_t>(m - lc.material_component.begin())]
+                            .name) +
+                    "/emission";
+            }
+            report(pointer, std::to_string(lc.components.size()) +
+                                " light components (each group with each maintenance factor, "
+                                "solved apart), over the limit of " +
+                                std::to_string(limits_.max_light_components));
+        }
+        over("/light_scenes", scene_.light_scenes.size(), limits_.max_light_scenes, "light scenes");
+        over("/observers", scene_.observers.size(), limits_.max_observers, "observers");
+        for (Problem& p : check_kept_sensor_values(scene_, limits_))
+            problems_.push_back(std::move(p));
+        return problems_.size() == problems;
+    }
+
+    void over(const char* pointer, std::size_t count, std::size_t limit, const char* what) {
+        if (count > limit) {
+            report(pointer, std::to_string(count) + " " + what + ", over the limit of " +
+                                std::to_string(limit));
+        }
+    }
+
     const Scene& scene_;
+    const SceneLimits& limits_;
     std::vector<Problem>& problems_;
 };
 
 }  // namespace
 
-void check_lighting_design(const Scene& scene, std::vector<Problem>& problems) {
-    DesignChecker(scene, problems).run();
+void check_lighting_design(const Scene& scene, const SceneLimits& limits,
+                           std::vector<Problem>& problems) {
+    DesignChecker(scene, limits, problems).run();
+}
+
+std::vector<Problem> check_kept_sensor_values(const Scene& scene, const SceneLimits& limits) {
+    std::size_t points = 0;
+    for (const SensorSet& s : scene.sensors) points += s.points.size();
+    const LightComponents lc = light_components(scene);
+    const bool kept = lc.named_groups || !scene.light_scenes.empty();
+    const std::size_t copies = kept ? 1 + lc.groups.size() + scene.light_scenes.size() : 1;
+    // Saturating: engine users may pass any counts.
+    const std::size_t values = points > limits.max_kept_sensor_values / copies
+                                   ? limits.max_kept_sensor_values + 1
+                                   : points * copies;
+    if (values <= limits.max_kept_sensor_values) return {};
+    return {{"/sensors", std::to_string(points) + " sensor points × (1 + " +
+                             std::to_string(lc.groups.size()) + " groups + " +
+                             std::to_string(scene.light_scenes.size()) +
+                             " light scenes) values to keep, over the limit of " +
+                             std::to_string(limits.max_kept_sensor_values)}};
 }
 
 }  // namespace radiant

@@ -8,7 +8,9 @@
 
 namespace radiant {
 
-/// Appends every problem of the scene's lighting-design keys to `problems`.
-void check_lighting_design(const Scene& scene, std::vector<Problem>& problems);
+/// Appends every problem of the scene's lighting-design keys to `problems`, their limits
+/// (components, light scenes, observers, kept sensor values) included.
+void check_lighting_design(const Scene& scene, const SceneLimits& limits,
+                           std::vector<Problem>& problems);
 
 }  // namespace radiant

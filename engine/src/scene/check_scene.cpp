@@ -282,7 +282,7 @@ std::vector<Problem> check_scene(const Scene& scene, const SceneLimits& limits) 
     check_luminaires(scene, check);
     check_sensors(scene, check);
     check_settings(scene.settings, check);
-    check_lighting_design(scene, problems);
+    check_lighting_design(scene, limits, problems);
     return problems;
 }
 
