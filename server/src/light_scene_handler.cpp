@@ -1,6 +1,8 @@
 // POST /v1/jobs/{id}/scenes: a light scene from a finished job's stored solution, without
 // solving again. Light is linear in the emission: the stored result keeps every group's
-// contribution (its `groups`), and a light scene is their sum with the posted dimming.
+// contribution (its `groups`), and a light scene is their sum with the posted dimming. The
+// stored result is parsed once per job (StoredSolutions).
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "radiant/lighting.h"
@@ -31,26 +33,31 @@ Response post_light_scene(ServiceContext& ctx, const Request& request, const std
                               "job " + id + " is " + to_string(job->status) +
                                   "; light scenes need its finished solution");
     }
-    const auto stored = ctx.store.result(id);
-    if (!stored) {
-        return error_response(
-            request, http::status::not_found, "no_result",
-            "job " + id + " was " + to_string(job->status) + " before it produced a result");
+    std::shared_ptr<const Result> solution = ctx.solutions->find(id);
+    if (!solution) {
+        const auto stored = ctx.store.result(id);
+        if (!stored) {
+            return error_response(
+                request, http::status::not_found, "no_result",
+                "job " + id + " was " + to_string(job->status) + " before it produced a result");
+        }
+        const auto doc = nlohmann::json::parse(*stored, nullptr, false);
+        std::string error;
+        auto read = std::make_shared<Result>(proto::lighting_solution_from_json(doc, error));
+        if (!error.empty()) {
+            return error_response(request, http::status::internal_server_error, "internal",
+                                  "the stored result of job " + id + " cannot be read: " + error);
+        }
+        ctx.solutions->keep(id, read);
+        solution = std::move(read);
     }
-    const auto doc = nlohmann::json::parse(*stored, nullptr, false);
-    std::string error;
-    const Result solution = proto::lighting_solution_from_json(doc, error);
-    if (!error.empty()) {
-        return error_response(request, http::status::internal_server_error, "internal",
-                              "the stored result of job " + id + " cannot be read: " + error);
-    }
-    if (solution.groups.empty()) {
+    if (solution->groups.empty()) {
         return error_response(request, http::status::conflict, "no_groups",
                               "job " + id +
                                   "'s scene names no groups and no light scenes, so "
                                   "its solve kept no group contributions");
     }
-    auto evaluated = evaluate_light_scene(solution, std::get<LightScene>(posted));
+    auto evaluated = evaluate_light_scene(*solution, std::get<LightScene>(posted));
     if (auto* problems = std::get_if<std::vector<Problem>>(&evaluated)) {
         return error_response(request, http::status::bad_request, "invalid_light_scene", "", "",
                               *problems);

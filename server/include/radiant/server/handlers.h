@@ -6,12 +6,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 
 #include "radiant/server/http.h"
 #include "radiant/server/job_queue.h"
 #include "radiant/server/job_store.h"
 #include "radiant/server/metrics.h"
+#include "radiant/server/stored_solutions.h"
 
 namespace radiant::server {
 
@@ -21,6 +23,8 @@ struct ServiceContext {
     JobStore& store;
     Metrics& metrics;
     std::size_t max_body_bytes;
+    /// Light scenes' solutions, read once per finished job.
+    std::shared_ptr<StoredSolutions> solutions = std::make_shared<StoredSolutions>();
 };
 
 using Query = std::map<std::string, std::string>;
