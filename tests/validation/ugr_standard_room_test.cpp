@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 
@@ -40,56 +41,39 @@ std::string panel_ies() {
 }
 
 std::string scene_json(const std::string& method) {
-    auto polygon = [](const char* name, const char* material, const std::string& points) {
-        return std::string(R"({"name": ")") + name + R"(", "material": ")" + material +
-               R"(", "polygon": )" + points + "}";
+    using Json = nlohmann::json;
+    // The room's six faces, each facing in: corners counter-clockwise seen from inside.
+    const auto face = [](const char* name, const char* material, const Json& corners) {
+        return Json{{"name", name}, {"material", material}, {"polygon", corners}};
     };
-    const std::string x = std::to_string(kX), y = std::to_string(kY), h = std::to_string(kH);
-    std::string surfaces =
-        polygon("floor", "floor",
-                "[[0,0,0],[" + x + ",0,0],[" + x + "," + y + ",0],[0," + y + ",0]]") +
-        "," +
-        polygon("ceiling", "ceiling",
-                "[[0,0," + h + "],[0," + y + "," + h + "],[" + x + "," + y + "," + h + "],[" + x +
-                    ",0," + h + "]]") +
-        "," +
-        polygon("south", "wall",
-                "[[0,0,0],[0,0," + h + "],[" + x + ",0," + h + "],[" + x + ",0,0]]") +
-        "," +
-        polygon("north", "wall",
-                "[[0," + y + ",0],[" + x + "," + y + ",0],[" + x + "," + y + "," + h + "],[0," + y +
-                    "," + h + "]]") +
-        "," +
-        polygon("west", "wall",
-                "[[0,0,0],[0," + y + ",0],[0," + y + "," + h + "],[0,0," + h + "]]") +
-        "," +
-        polygon("east", "wall",
-                "[[" + x + ",0,0],[" + x + ",0," + h + "],[" + x + "," + y + "," + h + "],[" + x +
-                    "," + y + ",0]]");
-    std::string luminaires;
+    const Json surfaces = {
+        face("floor", "floor", {{0, 0, 0}, {kX, 0, 0}, {kX, kY, 0}, {0, kY, 0}}),
+        face("ceiling", "ceiling", {{0, 0, kH}, {0, kY, kH}, {kX, kY, kH}, {kX, 0, kH}}),
+        face("south", "wall", {{0, 0, 0}, {0, 0, kH}, {kX, 0, kH}, {kX, 0, 0}}),
+        face("north", "wall", {{0, kY, 0}, {kX, kY, 0}, {kX, kY, kH}, {0, kY, kH}}),
+        face("west", "wall", {{0, 0, 0}, {0, kY, 0}, {0, kY, kH}, {0, 0, kH}}),
+        face("east", "wall", {{kX, 0, 0}, {kX, 0, kH}, {kX, kY, kH}, {kX, kY, 0}})};
+    Json luminaires = Json::array();
     for (double lx = kH / 2; lx < kX; lx += kH) {
         for (double ly = kH / 2; ly < kY; ly += kH) {
-            if (!luminaires.empty()) luminaires += ",";
-            luminaires += R"({"name": "L", "position": [)" + std::to_string(lx) + "," +
-                          std::to_string(ly) + "," + std::to_string(kLuminaireZ) +
-                          R"(], "distribution": {"ies": ")";
-            for (const char c : panel_ies())
-                luminaires += c == '\n' ? std::string("\\n") : std::string(1, c);
-            luminaires += R"("}})";
+            luminaires.push_back({{"name", "L"},
+                                  {"position", {lx, ly, kLuminaireZ}},
+                                  {"distribution", {{"ies", panel_ies()}}}});
         }
     }
-    return R"({"format": "radiant-scene/1", "name": "cie-standard-room",
+    Json scene = Json::parse(R"({"format": "radiant-scene/1", "name": "cie-standard-room",
       "materials": {"floor": {"reflectance": 0.2}, "wall": {"reflectance": 0.5},
                     "ceiling": {"reflectance": 0.7}},
-      "surfaces": [)" +
-           surfaces + R"(], "luminaires": [)" + luminaires + R"(],
       "sensors": [{"name": "reference plane", "normal": [0, 0, 1],
                    "grid": {"origin": [0.5, 0.5, 0.01], "u": [7, 0, 0], "v": [0, 15, 0],
                             "nu": 7, "nv": 15}}],
-      "observers": [{"name": "wall middle", "position": [4, )" +
-           std::to_string(kEye) + ", " + std::to_string(kEye) + R"(], "view": [0, 1, 0]}],
-      "settings": {"tolerance": 0.02, "method": ")" +
-           method + R"("}})";
+      "settings": {"tolerance": 0.02}})");
+    scene["surfaces"] = surfaces;
+    scene["luminaires"] = luminaires;
+    scene["observers"] = {
+        {{"name", "wall middle"}, {"position", {4, kEye, kEye}}, {"view", {0, 1, 0}}}};
+    scene["settings"]["method"] = method;
+    return scene.dump();
 }
 
 // CIE 117's fit of the Luckiesh–Guth position index, written out again here.
