@@ -7,6 +7,7 @@
 // L_b = E_WID/π with E_WID = Σ Φ_direct · F_T / A_w, the transfer factors F_T of a three-surface
 // room by exact view factors, the direct flux on the floor by exact form factors — and the
 // solve must agree within 1 UGR unit. Its background luminance is the radiosity the eye sees.
+// Rooms of 2H × 2H and 8H × 4H check the same formulas away from the table's room.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -23,7 +24,13 @@ namespace radiant {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kH = 2, kX = 4 * kH, kY = 8 * kH;
+constexpr double kH = 2;
+
+/// A room of the tabular method: `across` and `along` the observer's line of sight, metres.
+struct Room {
+    double across = 4 * kH, along = 8 * kH;
+    const char* method = "monte-carlo";
+};
 constexpr double kFlux = 3000, kSide = 0.6;  // lm per luminaire; its square luminous area, m
 // The luminaires hang just under the ceiling; the eye is just off the wall and the floor.
 constexpr double kLuminaireZ = kH - 0.005, kEye = 0.01;
@@ -40,8 +47,9 @@ std::string panel_ies() {
     return ies + "\n";
 }
 
-std::string scene_json(const std::string& method) {
+std::string scene_json(const Room& room) {
     using Json = nlohmann::json;
+    const double kX = room.across, kY = room.along;
     // The room's six faces, each facing in: corners counter-clockwise seen from inside.
     const auto face = [](const char* name, const char* material, const Json& corners) {
         return Json{{"name", name}, {"material", material}, {"polygon", corners}};
@@ -64,15 +72,21 @@ std::string scene_json(const std::string& method) {
     Json scene = Json::parse(R"({"format": "radiant-scene/1", "name": "cie-standard-room",
       "materials": {"floor": {"reflectance": 0.2}, "wall": {"reflectance": 0.5},
                     "ceiling": {"reflectance": 0.7}},
-      "sensors": [{"name": "reference plane", "normal": [0, 0, 1],
-                   "grid": {"origin": [0.5, 0.5, 0.01], "u": [7, 0, 0], "v": [0, 15, 0],
-                            "nu": 7, "nv": 15}}],
       "settings": {"tolerance": 0.02}})");
+    // A sensor grid on the floor, 1 m apart: the Monte Carlo method measures its error there.
+    scene["sensors"] = {{{"name", "reference plane"},
+                         {"normal", {0, 0, 1}},
+                         {"grid",
+                          {{"origin", {0.5, 0.5, 0.01}},
+                           {"u", {kX - 1, 0, 0}},
+                           {"v", {0, kY - 1, 0}},
+                           {"nu", std::lround(kX - 1)},
+                           {"nv", std::lround(kY - 1)}}}}};
     scene["surfaces"] = surfaces;
     scene["luminaires"] = luminaires;
     scene["observers"] = {
-        {{"name", "wall middle"}, {"position", {4, kEye, kEye}}, {"view", {0, 1, 0}}}};
-    scene["settings"]["method"] = method;
+        {{"name", "wall middle"}, {"position", {kX / 2, kEye, kEye}}, {"view", {0, 1, 0}}}};
+    scene["settings"]["method"] = room.method;
     return scene.dump();
 }
 
@@ -104,7 +118,8 @@ double point_to_corner_rectangle(double a, double b, double h) {
 
 /// CIE 190's transfer factors: indirect flux reaching the walls per lumen falling directly on
 /// the floor, walls and ceiling of the three-surface room (exact view factors, radiosity solved).
-std::array<double, 3> transfer_factors() {
+std::array<double, 3> transfer_factors(const Room& room) {
+    const double kX = room.across, kY = room.along;
     const double af = kX * kY, aw = 2 * kH * (kX + kY);
     const double ffc = parallel_rectangles(kX, kY, kH), ffw = 1 - ffc;
     const double fwf = af * ffw / aw, fww = 1 - 2 * fwf;
@@ -128,7 +143,7 @@ std::array<double, 3> transfer_factors() {
 
 TEST(UgrStandardRoomTable, TransferFactorsAreCie190s) {
     // CIE 190:2010 Table 5, k = 2.67, reflectances 0.7 / 0.5 / 0.2: 0.115, 0.211, 0.307.
-    const auto t = transfer_factors();
+    const auto t = transfer_factors(Room{});
     EXPECT_NEAR(t[0], 0.115, 0.0005);
     EXPECT_NEAR(t[1], 0.211, 0.0005);
     EXPECT_NEAR(t[2], 0.307, 0.0005);
@@ -136,10 +151,13 @@ TEST(UgrStandardRoomTable, TransferFactorsAreCie190s) {
 
 // The Monte Carlo method gathers the background at the eye; the radiosity methods cast rays from
 // the eye into their solved mesh.
-class UgrStandardRoom : public ::testing::TestWithParam<const char*> {};
+// Rooms other than the one of the transfer factors' table check the same formulas.
+class UgrStandardRoom : public ::testing::TestWithParam<Room> {};
 
 TEST_P(UgrStandardRoom, AgreesWithTheTabularMethodWithinOneUnit) {
-    const proto::ParseOutcome outcome = proto::parse_scene(scene_json(GetParam()));
+    const Room& room = GetParam();
+    const double kX = room.across, kY = room.along;
+    const proto::ParseOutcome outcome = proto::parse_scene(scene_json(room));
     ASSERT_TRUE(outcome.ok()) << outcome.problems[0].pointer << ": " << outcome.problems[0].message;
     const Result r = solve(*outcome.scene, options_from(outcome.scene->settings));
     ASSERT_EQ(r.status, SolveStatus::converged) << testing::describe(r);
@@ -167,7 +185,7 @@ TEST_P(UgrStandardRoom, AgreesWithTheTabularMethodWithinOneUnit) {
         }
     }
     const double wall_flux = luminaires * kFlux - floor_flux;  // no light goes up
-    const auto ft = transfer_factors();
+    const auto ft = transfer_factors(room);
     const double e_wid = (floor_flux * ft[0] + wall_flux * ft[1]) / (2 * kH * (kX + kY));
     const double lb = e_wid / kPi;
     const double tabular = 8 * std::log10(0.25 / lb * glare);
@@ -181,12 +199,18 @@ TEST_P(UgrStandardRoom, AgreesWithTheTabularMethodWithinOneUnit) {
     RecordProperty("tabular_ugr", std::to_string(tabular));
 }
 
-std::string method_name(const ::testing::TestParamInfo<const char*>& param) {
-    return std::string(param.param) == "monte-carlo" ? "monte_carlo" : param.param;
+std::string room_name(const ::testing::TestParamInfo<Room>& param) {
+    const Room& r = param.param;
+    std::string name = std::to_string(std::lround(r.across / kH)) + "Hx" +
+                       std::to_string(std::lround(r.along / kH)) + "H_";
+    name += std::string(r.method) == "monte-carlo" ? "monte_carlo" : r.method;
+    return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, UgrStandardRoom, ::testing::Values("monte-carlo", "hierarchical"),
-                         method_name);
+INSTANTIATE_TEST_SUITE_P(Rooms, UgrStandardRoom,
+                         ::testing::Values(Room{}, Room{4 * kH, 8 * kH, "hierarchical"},
+                                           Room{2 * kH, 2 * kH}, Room{8 * kH, 4 * kH}),
+                         room_name);
 
 }  // namespace
 }  // namespace radiant
