@@ -29,6 +29,10 @@ constexpr Default kAperture{"default-aperture", 0.08, false};  // glass: most li
 constexpr Default kDoor{"default-door", 0.5, false};
 constexpr Default kShade{"default-shade", 0.35, true};
 
+/// Ear clipping takes up to cubic time in the vertices of a face with holes; real faces (a wall
+/// and its windows) have tens.
+constexpr std::size_t kMaxVerticesWithHoles = 1000;
+
 class Converter {
 public:
     Json convert(const Json& model);
@@ -226,8 +230,15 @@ void Converter::face3d(const Json& object, const Ptr& p, const Default& fallback
     if (reverse) std::reverse(polygon.begin(), polygon.end());
     Json surface = {{"name", name_of(object, p.to_string())},
                     {"material", material(object, fallback)}};
+    std::size_t ring_vertices = polygon.size();
+    for (const Json& hole : holes) ring_vertices += hole.size();
     if (holes.empty()) {
         surface["polygon"] = polygon;
+    } else if (ring_vertices > kMaxVerticesWithHoles) {
+        report(at / "holes", "a face with holes may have at most " +
+                                 std::to_string(kMaxVerticesWithHoles) + " vertices, not " +
+                                 std::to_string(ring_vertices));
+        return;
     } else if (auto mesh = mesh_with_holes(polygon, holes)) {
         surface["mesh"] = std::move(*mesh);
     } else {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -48,6 +49,12 @@ TEST(HostileScene, GltfInstancesCountAgainstTheVertexLimitBeforeExpansion) {
         << outcome.problems[0].message;
     limits.scene.max_vertices = 3000;
     EXPECT_TRUE(parse_scene(scene, limits).ok()) << "1000 instances of 3 vertices fit";
+    limits.max_faces = 500;
+    const ParseOutcome faces = parse_scene(scene, limits);
+    ASSERT_EQ(faces.problems.size(), 1u);
+    EXPECT_EQ(faces.problems[0].pointer, "/surfaces/0/gltf");
+    EXPECT_NE(faces.problems[0].message.find("more than 500 faces"), std::string::npos)
+        << faces.problems[0].message;
 }
 
 TEST(HostileScene, GltfJsonNestingIsRefusedBeforeTinygltfRecurses) {
@@ -211,6 +218,26 @@ TEST(HostileScene, HoneybeeGridWithManyDirectionsConvertsInLinearTime) {
     ASSERT_TRUE(outcome.problems.empty())
         << outcome.problems[0].pointer << ": " << outcome.problems[0].message;
     EXPECT_EQ((*outcome.scene)["sensors"].size(), 50000u);
+}
+
+TEST(HostileScene, HoneybeeFaceWithHolesIsLimitedBeforeEarClipping) {
+    Json boundary = Json::array();
+    for (int k = 0; k < 5000; ++k) {
+        const double a = 2 * 3.141592653589793 * k / 5000;
+        boundary.push_back({10 * std::cos(a), 10 * std::sin(a), 0});
+    }
+    const Json hole = {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    const Json model = {
+        {"type", "Model"},
+        {"orphaned_shades",
+         {{{"identifier", "s"},
+           {"geometry",
+            {{"type", "Face3D"}, {"boundary", boundary}, {"holes", Json::array({hole})}}}}}}};
+    const HoneybeeOutcome outcome = honeybee_to_scene(model.dump());
+    ASSERT_EQ(outcome.problems.size(), 1u);
+    EXPECT_EQ(outcome.problems[0].pointer, "/orphaned_shades/0/geometry/holes");
+    EXPECT_EQ(outcome.problems[0].message,
+              "a face with holes may have at most 1000 vertices, not 5003");
 }
 
 }  // namespace

@@ -225,6 +225,11 @@ std::string Reader::primitive(const tinygltf::Primitive& p, const Mat4& m, const
         std::memcpy(xyz, base + k * stride, sizeof xyz);
         points[k] = from_gltf_axes(transform(m, {xyz[0], xyz[1], xyz[2]})) * units_per_metre_;
     }
+    // Faces count against the budget before the indices are copied.
+    const auto count_faces = [&](std::size_t n) {
+        faces_ += p.mode == TINYGLTF_MODE_TRIANGLES ? n / 3 : (n > 2 ? n - 2 : 0);
+        return budget_.refuse(vertices_, faces_);
+    };
     std::vector<std::uint32_t> indices;
     if (p.indices >= 0) {
         const auto& a = model_.accessors.size() > static_cast<std::size_t>(p.indices)
@@ -241,6 +246,7 @@ std::string Reader::primitive(const tinygltf::Primitive& p, const Mat4& m, const
             !e.empty()) {
             return where + ": " + e;
         }
+        if (auto refused = count_faces(index_count)) return *refused;
         indices.resize(index_count);
         for (std::size_t k = 0; k < index_count; ++k) {
             std::uint32_t value = 0;
@@ -258,13 +264,12 @@ std::string Reader::primitive(const tinygltf::Primitive& p, const Mat4& m, const
             indices[k] = value;
         }
     } else {
+        if (auto refused = count_faces(count)) return *refused;
         indices.resize(count);
         for (std::size_t k = 0; k < count; ++k) indices[k] = static_cast<std::uint32_t>(k);
     }
 
     const std::size_t n = indices.size();
-    faces_ += p.mode == TINYGLTF_MODE_TRIANGLES ? n / 3 : (n > 2 ? n - 2 : 0);
-    if (auto refused = budget_.refuse(vertices_, faces_)) return *refused;
     const auto [slot, added] = part_of_material_.try_emplace(p.material, out.parts.size());
     if (added) {
         ImportedPart& part = out.parts.emplace_back();
