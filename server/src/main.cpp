@@ -49,16 +49,17 @@ int serve(const ServerConfig& config) {
     queue_options.queue_limit = config.queue_limit;
     queue_options.job_seconds = config.job_seconds;
     JobQueue jobs(store, metrics, queue_options);
-    net::thread_pool scene_pool(config.scene_threads);
     ServiceContext ctx{jobs, store, metrics, config.max_body_bytes};
     ctx.access.allowed_hosts = config.allowed_hosts;
     ctx.access.cors_origins = config.cors_origins;
     ctx.access.token = token;
     ctx.listen_host = listen->host;
-    ctx.scene_pool = &scene_pool;
     Router router(ctx);
 
     net::io_context ioc(static_cast<int>(config.io_threads));
+    // After the io_context, so that it is joined and destroyed first: its tasks hold sessions.
+    net::thread_pool scene_pool(config.scene_threads);
+    ctx.scene_pool = &scene_pool;
     SessionLimits limits;
     limits.body_bytes = config.max_body_bytes;
     const net::ip::tcp::endpoint endpoint(net::ip::make_address(listen->host), listen->port);
@@ -87,7 +88,7 @@ int serve(const ServerConfig& config) {
     for (std::size_t i = 1; i < config.io_threads; ++i) threads.emplace_back([&ioc] { ioc.run(); });
     ioc.run();
     for (std::thread& t : threads) t.join();
-    scene_pool.stop();
+    // Parses still queued finish; the queue is shut, so they answer 503 to nobody.
     scene_pool.join();
     jobs.shutdown();
     spdlog::info("radiantd stopped");
