@@ -228,8 +228,13 @@ TEST_F(DaemonTest, HealthzAnswersFastWhileHostileBodiesAreParsed) {
     waiter.join();
     for (const unsigned status : statuses) EXPECT_EQ(status, 413u) << "over the key budget";
     ASSERT_GT(ms.size(), 10u) << "the parses took long enough to be measured";
+    // Parsing on the I/O threads stalled every poll for the whole parse (6.7 s measured). The
+    // 99th percentile and the worst poll leave room for a busy machine's scheduler (one poll of
+    // 140 ms in 878 at a load average of 20), not for a stall.
     std::sort(ms.begin(), ms.end());
-    EXPECT_LT(ms.back(), 100.0) << ms.size() << " polls, median " << ms[ms.size() / 2] << " ms";
+    const double p99 = ms[ms.size() * 99 / 100];
+    EXPECT_LT(p99, 100.0) << ms.size() << " polls, median " << ms[ms.size() / 2] << " ms";
+    EXPECT_LT(ms.back(), 1000.0) << ms.size() << " polls, median " << ms[ms.size() / 2] << " ms";
 }
 
 TEST_F(DaemonTest, TokenFileGuardsEveryRouteButHealthzAndTheCliSendsIt) {
