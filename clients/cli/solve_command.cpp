@@ -22,6 +22,10 @@ struct SolveArgs {
 };
 
 int run_solve(const SolveArgs& args) {
+    // Before the solve, so that a refused output costs nothing.
+    for (const std::string& path : {args.out, args.gltf}) {
+        if (!path.empty()) check_output_path(path);
+    }
     const std::optional<Scene> scene = load_checked_scene(args.scene);
     if (!scene) return kExitBadInput;
     Result result = solve_locally(*scene, args.flags, args.mesh || !args.gltf.empty());

@@ -44,6 +44,14 @@ std::vector<SensorResult> stored_sensors(const std::string& document) {
     return sensors;
 }
 
+/// "application/json", with parameters ("; charset=utf-8") and in any case.
+bool is_json_media_type(std::string_view value) {
+    value = value.substr(0, value.find(';'));
+    while (!value.empty() && value.back() == ' ') value.remove_suffix(1);
+    return boost::beast::iequals(boost::beast::string_view(value.data(), value.size()),
+                                 "application/json");
+}
+
 Response job_response(const Request& request, http::status status, const JobRecord& job) {
     Response response = json_response(request, status, job_to_json(job));
     response.set(http::field::location, "/v1/jobs/" + job.id);
@@ -95,18 +103,28 @@ Response submit_job(ServiceContext& ctx, const Request& request) {
             request, http::status::payload_too_large, "too_large",
             "the request body is larger than " + std::to_string(ctx.max_body_bytes) + " bytes");
     }
-    if (!nlohmann::json::accept(body)) {
-        // parse_scene gives the line and column of the syntax error.
-        const proto::ParseOutcome outcome = proto::parse_scene(body);
-        return error_response(request, http::status::bad_request, "invalid_json",
-                              "the body is not JSON", "", outcome.problems);
+    // A web page may send text/plain across origins without asking first; it cannot send JSON.
+    if (!is_json_media_type(to_std(request[http::field::content_type]))) {
+        return error_response(request, http::status::unsupported_media_type,
+                              "unsupported_media_type",
+                              "a scene is sent with Content-Type: application/json");
     }
     proto::ParseLimits limits;
     limits.max_bytes = ctx.max_body_bytes;
+    // One pass: JSON syntax and budget, then the scene.
     const proto::ParseOutcome outcome = proto::parse_scene(body, limits);
-    if (!outcome.ok()) {
-        return error_response(request, http::status::bad_request, "invalid_scene", "", "",
-                              outcome.problems);
+    switch (outcome.refusal) {
+        case proto::Refusal::none:
+            break;
+        case proto::Refusal::not_json:
+            return error_response(request, http::status::bad_request, "invalid_json", "", "",
+                                  outcome.problems);
+        case proto::Refusal::over_budget:
+            return error_response(request, http::status::payload_too_large, "too_complex", "", "",
+                                  outcome.problems);
+        case proto::Refusal::scene:
+            return error_response(request, http::status::bad_request, "invalid_scene", "", "",
+                                  outcome.problems);
     }
     const std::string key(request["Idempotency-Key"]);
     const SubmitOutcome submitted = ctx.jobs.submit(body, key);

@@ -16,7 +16,11 @@ Response text_response(const Request& request, http::status status, std::string 
 }
 
 Response json_response(const Request& request, http::status status, const nlohmann::json& body) {
-    return text_response(request, status, body.dump() + "\n", "application/json");
+    // A message may quote request bytes (a path, a job id) that are not UTF-8: replace them
+    // rather than throw, so the answer stays the 4xx it should be.
+    return text_response(request, status,
+                         body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n",
+                         "application/json");
 }
 
 Response error_response(const Request& request, http::status status, const std::string& code,

@@ -74,9 +74,19 @@ Query parse_query(std::string_view query) {
     return out;
 }
 
+bool Router::parses_scene(const Request& request) {
+    const std::string_view path = to_std(request.target()).substr(0, request.target().find('?'));
+    return request.method() == http::verb::post || path.ends_with("/result.glb");
+}
+
 RouteResult Router::route(const Request& request) {
     try {
-        return dispatch(request);
+        if (auto refused = check_access(ctx_.access, ctx_.listen_host, request)) {
+            return {std::move(*refused), std::nullopt};
+        }
+        RouteResult routed = dispatch(request);
+        add_cors_headers(ctx_.access, request, routed.response);
+        return routed;
     } catch (const std::exception& e) {
         // Catch at the boundary: a broken request or store is one 500, not a dead daemon.
         spdlog::error("{} {}: {}", std::string(request.method_string()),

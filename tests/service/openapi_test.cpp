@@ -141,6 +141,16 @@ TEST(OpenApi, EveryAnswerMatchesTheSpec) {
         rec.call(verb::post, jobs, jobs, R"({"format": "radiant-scene/1", "surfaces": []})").status,
         400u);
     EXPECT_EQ(rec.call(verb::post, jobs, jobs, std::string(100001, ' ')).status, 413u);
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, std::string(1000, '[')).status, 413u);
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, radiant::test::tiny_room(),
+                       {{"Content-Type", "text/plain"}})
+                  .status,
+              415u);
+    EXPECT_EQ(rec.call(verb::get, jobs, jobs, "", {{"Host", "evil.example"}}).status, 403u);
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, radiant::test::tiny_room(),
+                       {{"Origin", "https://evil.example"}})
+                  .status,
+              403u);
     EXPECT_EQ(rec.call(verb::get, jobs, jobs + "?limit=0").status, 400u);
     const std::string unknown = "/v1/jobs/00000000000000000000000000000000";
     EXPECT_EQ(rec.call(verb::get, job, unknown).status, 404u);

@@ -29,8 +29,13 @@ class Router {
 public:
     explicit Router(ServiceContext& ctx) : ctx_(ctx) {}
 
-    /// Never throws: an exception from a handler becomes a 500 with a JSON error body.
+    /// Never throws: an exception from a handler becomes a 500 with a JSON error body. Requests
+    /// the access policy refuses get their 401 or 403 before any handler runs.
     RouteResult route(const Request& request);
+
+    /// Whether routing `request` may parse a scene (a submitted body, a stored scene), which
+    /// takes time in proportion to its size: sessions run these on the scene pool.
+    static bool parses_scene(const Request& request);
 
     ServiceContext& context() { return ctx_; }
 
