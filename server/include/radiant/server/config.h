@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -17,12 +18,18 @@ struct ServerConfig {
     std::size_t max_body_bytes = 64u << 20;
     std::optional<double> job_seconds;  ///< per-job solve time cap (none: the scene's own)
     std::size_t io_threads = 2;         ///< handlers are short; solves run on the workers
+    std::string web_root;               ///< the viewer's files (empty: default_web_root())
 };
 
 struct ListenAddress {
     std::string host;
     std::uint16_t port = 0;
 };
+
+/// Where an installed radiantd finds the web viewer: PREFIX/share/radiant/web for
+/// PREFIX/bin/radiantd. The build tree has the same layout (build/bin, build/share), so a built
+/// daemon finds the viewer the build made.
+std::filesystem::path default_web_root(const std::filesystem::path& executable);
 
 /// "127.0.0.1:8080" or "[::1]:8080"; nothing for anything else.
 std::optional<ListenAddress> parse_listen(const std::string& text);
