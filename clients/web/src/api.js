@@ -10,7 +10,10 @@ export class ServiceError extends Error {
         this.pointer = typeof error.pointer === "string" ? error.pointer : "";
         const problems = Array.isArray(error.problems) ? error.problems : [];
         this.problems = problems.length
-            ? problems.map((p) => ({ pointer: String(p.pointer ?? ""), message: String(p.message) }))
+            ? problems.map((p) => ({
+                  pointer: String(p.pointer ?? ""),
+                  message: String(p.message),
+              }))
             : [{ pointer: this.pointer, message: this.message }];
     }
 }
@@ -22,7 +25,10 @@ async function call(method, path, { body, accept = "application/json" } = {}) {
     try {
         response = await fetch(path, { method, headers, body });
     } catch (e) {
-        throw new ServiceError(0, { code: "unreachable", message: `cannot reach radiantd: ${e.message}` });
+        throw new ServiceError(0, {
+            code: "unreachable",
+            message: `cannot reach radiantd: ${e.message}`,
+        });
     }
     const text = await response.text();
     let json = null;
@@ -32,7 +38,10 @@ async function call(method, path, { body, accept = "application/json" } = {}) {
         // Not JSON: reported below when it was an error, else as it is.
     }
     if (!response.ok) {
-        throw new ServiceError(response.status, json?.error ?? { message: `HTTP ${response.status}: ${text.slice(0, 200)}` });
+        throw new ServiceError(
+            response.status,
+            json?.error ?? { message: `HTTP ${response.status}: ${text.slice(0, 200)}` },
+        );
     }
     return json;
 }

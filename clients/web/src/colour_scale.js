@@ -23,10 +23,13 @@ const FALSE_COLOUR_STOPS = [
 
 /// The false colour of t ∈ [0, 1] as linear RGB.
 export function falseColour(t) {
-    const x = Math.min(1, Math.max(0, Number.isFinite(t) ? t : 0)) * (FALSE_COLOUR_STOPS.length - 1);
+    const x =
+        Math.min(1, Math.max(0, Number.isFinite(t) ? t : 0)) * (FALSE_COLOUR_STOPS.length - 1);
     const i = Math.min(Math.floor(x), FALSE_COLOUR_STOPS.length - 2);
     const f = x - i;
-    return FALSE_COLOUR_STOPS[i].map((a, k) => srgbDecode(a + (FALSE_COLOUR_STOPS[i + 1][k] - a) * f));
+    return FALSE_COLOUR_STOPS[i].map((a, k) =>
+        srgbDecode(a + (FALSE_COLOUR_STOPS[i + 1][k] - a) * f),
+    );
 }
 
 /// The grey of t ∈ [0, 1] (linear, so the shading is proportional to luminance).
@@ -53,7 +56,9 @@ export function ticks(top, count = 5) {
 
 /// The value at quantile q (0–1) of `values`, ignoring non-finite ones; 0 when empty.
 export function quantile(values, q) {
-    const sorted = Array.from(values).filter(Number.isFinite).sort((a, b) => a - b);
+    const sorted = Array.from(values)
+        .filter(Number.isFinite)
+        .sort((a, b) => a - b);
     if (!sorted.length) return 0;
     return sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))];
 }

@@ -16,7 +16,9 @@ export class ErrorPanel {
     /// `error`: {message, code?, problems: [{pointer, message}]}; `scene`: what was sent, or null.
     show(error, scene) {
         const layout = scene ? layoutJson(scene) : null;
-        const problems = error.problems?.length ? error.problems : [{ pointer: "", message: error.message }];
+        const problems = error.problems?.length
+            ? error.problems
+            : [{ pointer: "", message: error.message }];
         const heading = Object.assign(document.createElement("h3"), {
             textContent: error.code ? `Refused (${error.code})` : "Refused",
         });
@@ -32,9 +34,15 @@ function problemView(problem, layout) {
     item.dataset.pointer = problem.pointer;
     const title = document.createElement("p");
     title.append(
-        Object.assign(document.createElement("code"), { className: "pointer", textContent: problem.pointer || "/" }),
+        Object.assign(document.createElement("code"), {
+            className: "pointer",
+            textContent: problem.pointer || "/",
+        }),
         " ",
-        Object.assign(document.createElement("span"), { className: "message", textContent: problem.message }),
+        Object.assign(document.createElement("span"), {
+            className: "message",
+            textContent: problem.message,
+        }),
     );
     item.append(title);
     if (layout) {
@@ -44,7 +52,8 @@ function problemView(problem, layout) {
         for (let i = at.from; i <= at.to; ++i) {
             const line = document.createElement("span");
             line.textContent = `${layout.lines[i]}\n`;
-            if (i >= at.first && i <= at.last) line.className = at.exact ? "at-pointer" : "at-pointer missing";
+            if (i >= at.first && i <= at.last)
+                line.className = at.exact ? "at-pointer" : "at-pointer missing";
             pre.append(line);
         }
         item.append(pre);

@@ -33,7 +33,10 @@ export function decodeMesh(data) {
     const positions = flatTriples(data.vertices, Float32Array, "vertices");
     const indices = flatTriples(data.triangles, Uint32Array, "triangles");
     const vertexCount = positions.length / 3;
-    need(indices.every((i) => i < vertexCount), "a triangle names a missing vertex");
+    need(
+        indices.every((i) => i < vertexCount),
+        "a triangle names a missing vertex",
+    );
     const triangleSurface = numbers(data.triangle_surface, Int32Array, "triangle_surface");
     need(triangleSurface.length === indices.length / 3, "triangle_surface length");
     return { meshVersion: data.mesh_version, positions, indices, triangleSurface };

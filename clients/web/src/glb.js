@@ -17,7 +17,9 @@ function fromBase64(text) {
     return Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
 }
 
-const isGlb = (bytes) => bytes.length >= 4 && new DataView(bytes.buffer, bytes.byteOffset).getUint32(0, true) === GLB_MAGIC;
+const isGlb = (bytes) =>
+    bytes.length >= 4 &&
+    new DataView(bytes.buffer, bytes.byteOffset).getUint32(0, true) === GLB_MAGIC;
 
 /// A .glb's JSON document and BIN chunk (null when it has none).
 function splitGlb(bytes) {
@@ -42,7 +44,8 @@ function splitGlb(bytes) {
         }
         offset += 8 + chunkLength;
     }
-    if (document === null || typeof document !== "object") throw new Error("a .glb without a JSON chunk");
+    if (document === null || typeof document !== "object")
+        throw new Error("a .glb without a JSON chunk");
     return { document, binary };
 }
 
@@ -82,7 +85,10 @@ function mimeType(name) {
 }
 
 const isExternal = (item) =>
-    item !== null && typeof item === "object" && typeof item.uri === "string" && !item.uri.startsWith("data:");
+    item !== null &&
+    typeof item === "object" &&
+    typeof item.uri === "string" &&
+    !item.uri.startsWith("data:");
 
 /// The .glb the service can read without files: a .glb as it is when it names no other file,
 /// else (and for a .gltf) repacked with every external buffer and image in it. `read(uri)`
@@ -108,7 +114,8 @@ export async function selfContainedGlb(bytes, read) {
     if (glb && ![...buffers, ...images].some(isExternal)) return bytes;
 
     for (const [index, buffer] of buffers.entries()) {
-        if (buffer === null || typeof buffer !== "object" || typeof buffer.uri !== "string") continue;
+        if (buffer === null || typeof buffer !== "object" || typeof buffer.uri !== "string")
+            continue;
         const uri = buffer.uri;
         if (index === 0 && binary === null) {
             // The first buffer becomes the BIN chunk: raw bytes, not base64 inside base64.
@@ -127,7 +134,8 @@ export async function selfContainedGlb(bytes, read) {
         }
     }
     for (const image of images) {
-        if (isExternal(image)) image.uri = `data:${mimeType(image.uri)};base64,${toBase64(await read(image.uri))}`;
+        if (isExternal(image))
+            image.uri = `data:${mimeType(image.uri)};base64,${toBase64(await read(image.uri))}`;
     }
     return packGlb(document, binary);
 }

@@ -12,9 +12,18 @@ export function renderJobs(list, jobs, { currentId, names, open }) {
             if (job.id === currentId) button.classList.add("current");
             const created = job.created ? new Date(job.created).toLocaleTimeString() : "";
             button.append(
-                Object.assign(document.createElement("span"), { className: "job-name", textContent: names[job.id] ?? job.id.slice(0, 8) }),
-                Object.assign(document.createElement("span"), { className: `badge ${job.status}`, textContent: job.status }),
-                Object.assign(document.createElement("span"), { className: "job-time", textContent: created }),
+                Object.assign(document.createElement("span"), {
+                    className: "job-name",
+                    textContent: names[job.id] ?? job.id.slice(0, 8),
+                }),
+                Object.assign(document.createElement("span"), {
+                    className: `badge ${job.status}`,
+                    textContent: job.status,
+                }),
+                Object.assign(document.createElement("span"), {
+                    className: "job-time",
+                    textContent: created,
+                }),
             );
             button.addEventListener("click", () => open(job.id));
             item.append(button);

@@ -19,7 +19,8 @@ const isScalar = (v) => v === null || typeof v !== "object";
 /// An array of scalars on one line, shortened past MAX_INLINE_ITEMS.
 function inlineArray(items) {
     const shown = items.slice(0, MAX_INLINE_ITEMS).map(scalarText).join(", ");
-    const more = items.length > MAX_INLINE_ITEMS ? `, … ${items.length - MAX_INLINE_ITEMS} more` : "";
+    const more =
+        items.length > MAX_INLINE_ITEMS ? `, … ${items.length - MAX_INLINE_ITEMS} more` : "";
     return `[${shown}${more}]`;
 }
 
@@ -44,7 +45,13 @@ export function layoutJson(value) {
                 lines.push(`${pad}${prefix}${open}`);
                 entries.forEach(([key, x], i) => {
                     const label = Array.isArray(v) ? "" : `${JSON.stringify(key)}: `;
-                    visit(x, `${pointer}/${escapeToken(key)}`, indent + 1, label, i + 1 < entries.length ? "," : "");
+                    visit(
+                        x,
+                        `${pointer}/${escapeToken(key)}`,
+                        indent + 1,
+                        label,
+                        i + 1 < entries.length ? "," : "",
+                    );
                 });
                 lines.push(`${pad}${close}${suffix}`);
             }

@@ -26,7 +26,11 @@ export class Legend {
         this.labels.replaceChildren(
             ...ticks(top, 4)
                 .reverse()
-                .map((value) => Object.assign(document.createElement("span"), { textContent: formatValue(value) })),
+                .map((value) =>
+                    Object.assign(document.createElement("span"), {
+                        textContent: formatValue(value),
+                    }),
+                ),
         );
     }
 }

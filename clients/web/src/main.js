@@ -23,7 +23,14 @@ const legend = new Legend($("#legend"));
 const errors = new ErrorPanel($("#errors"));
 
 /// What tests and the console can read: the open job and what the view shows of it.
-const state = { jobId: null, status: null, meshVersions: [], vertices: 0, snapshotVersion: null, resultStatus: null };
+const state = {
+    jobId: null,
+    status: null,
+    meshVersions: [],
+    vertices: 0,
+    snapshotVersion: null,
+    resultStatus: null,
+};
 window.radiantViewer = { state, project: (p) => view.project(p) };
 
 let loaded = null; // the scene ready to submit: {name, scene, body, inlined}
@@ -69,10 +76,17 @@ function showLoaded(scene, inlined) {
     }
     const count = (key) => (Array.isArray(scene?.[key]) ? scene[key].length : 0);
     const counted = (key, noun) => `${count(key)} ${noun}${count(key) === 1 ? "" : "s"}`;
-    summary.textContent = scene
-        ? `${loaded.name}: ${counted("surfaces", "surface")}, ${counted("luminaires", "luminaire")}, ${counted("sensors", "sensor set")}` +
-          `${scene.units ? `, in ${scene.units}` : ""}${inlined ? " (files inlined)" : ""}`
-        : `${loaded.name} (not a JSON object: the service will say why)`;
+    if (!scene) {
+        summary.textContent = `${loaded.name} (not a JSON object: the service will say why)`;
+        return;
+    }
+    const parts = [
+        counted("surfaces", "surface"),
+        counted("luminaires", "luminaire"),
+        counted("sensors", "sensor set"),
+    ];
+    if (scene.units) parts.push(`in ${scene.units}`);
+    summary.textContent = `${loaded.name}: ${parts.join(", ")}${inlined ? " (files inlined)" : ""}`;
 }
 
 async function loadExamples() {
@@ -80,9 +94,20 @@ async function loadExamples() {
     try {
         const response = await fetch("examples/index.json");
         const examples = await response.json();
-        select.replaceChildren(...examples.map((e) => Object.assign(document.createElement("option"), { value: e.path, textContent: e.name })));
+        select.replaceChildren(
+            ...examples.map((e) =>
+                Object.assign(document.createElement("option"), {
+                    value: e.path,
+                    textContent: e.name,
+                }),
+            ),
+        );
     } catch {
-        select.replaceChildren(Object.assign(document.createElement("option"), { textContent: "no examples installed" }));
+        select.replaceChildren(
+            Object.assign(document.createElement("option"), {
+                textContent: "no examples installed",
+            }),
+        );
         select.disabled = true;
         $("#open-example").disabled = true;
     }
@@ -92,7 +117,14 @@ async function openExample() {
     const path = $("#examples").value;
     const url = new URL(`examples/${path}`, document.baseURI);
     const response = await fetch(url);
-    await loadScene(path.split("/").pop().replace(/\.json$/, ""), await response.text(), urlReader(url));
+    await loadScene(
+        path
+            .split("/")
+            .pop()
+            .replace(/\.json$/, ""),
+        await response.text(),
+        urlReader(url),
+    );
 }
 
 /// Dropped or picked files: the scene is the .json that says it is one (else the first .json);
@@ -101,7 +133,10 @@ async function loadFiles(fileList) {
     const files = [...fileList];
     const candidates = files.filter((f) => f.name.toLowerCase().endsWith(".json"));
     if (!candidates.length) {
-        errors.show({ message: "drop a scene .json file (with the IES, OBJ or glTF files it names)" }, null);
+        errors.show(
+            { message: "drop a scene .json file (with the IES, OBJ or glTF files it names)" },
+            null,
+        );
         return;
     }
     let chosen = candidates[0];
@@ -148,13 +183,16 @@ function setStatus(status) {
 function showProgress({ stage, fraction, errorEstimate, elapsedSeconds }) {
     const scene = scenes.get(state.jobId);
     const tolerance = scene?.settings?.tolerance ?? 0.01;
-    if (Number.isFinite(fraction)) $("#progress-bar").style.width = `${Math.round(100 * Math.min(1, Math.max(0, fraction)))}%`;
+    if (Number.isFinite(fraction))
+        $("#progress-bar").style.width = `${Math.round(100 * Math.min(1, Math.max(0, fraction)))}%`;
     const parts = [];
     if (stage) parts.push(stage);
     if (Number.isFinite(fraction)) parts.push(`${Math.round(100 * fraction)} %`);
     if (Number.isFinite(errorEstimate) && errorEstimate > 0) {
         const percent = 100 * errorEstimate;
-        parts.push(`error ≈ ${percent > 100 ? "> 100" : percent.toPrecision(2)} % (target ${100 * tolerance} %)`);
+        parts.push(
+            `error ≈ ${percent > 100 ? "> 100" : percent.toPrecision(2)} % (target ${100 * tolerance} %)`,
+        );
     }
     if (Number.isFinite(elapsedSeconds)) parts.push(`${elapsedSeconds.toFixed(1)} s`);
     $("#progress-text").textContent = parts.join(" · ");
@@ -170,12 +208,18 @@ async function showResult(id, mine) {
     }
     if (mine !== token) return;
     const layouts = sensorLayouts(result, scenes.get(id));
-    view.setSensors(layouts, (result.sensors ?? []).map((s) => s.illuminance ?? []));
+    view.setSensors(
+        layouts,
+        (result.sensors ?? []).map((s) => s.illuminance ?? []),
+    );
     renderSensorTable($("#sensor-table"), result);
     if (result.status !== "running") {
         state.resultStatus = result.status;
-        $("#result-status").textContent = `result: ${result.status}` +
-            (Number.isFinite(result.stats?.error_estimate) ? `, error estimate ${(100 * result.stats.error_estimate).toPrecision(2)} %` : "");
+        $("#result-status").textContent =
+            `result: ${result.status}` +
+            (Number.isFinite(result.stats?.error_estimate)
+                ? `, error estimate ${(100 * result.stats.error_estimate).toPrecision(2)} %`
+                : "");
     }
     redraw();
 }
@@ -186,7 +230,13 @@ async function openJob(id) {
     stream = null;
     view.clear();
     renderSensorTable($("#sensor-table"), null);
-    Object.assign(state, { jobId: id, meshVersions: [], vertices: 0, snapshotVersion: null, resultStatus: null });
+    Object.assign(state, {
+        jobId: id,
+        meshVersions: [],
+        vertices: 0,
+        snapshotVersion: null,
+        resultStatus: null,
+    });
     $("#job-id").textContent = names[id] ? `${names[id]} (${id.slice(0, 8)})` : id;
     $("#result-status").textContent = "";
     $("#progress-bar").style.width = "0%";
@@ -197,7 +247,11 @@ async function openJob(id) {
         const job = await getJob(id);
         if (mine !== token) return;
         setStatus(job.status);
-        showProgress({ ...job.progress, errorEstimate: job.progress?.error_estimate, elapsedSeconds: job.progress?.elapsed_seconds });
+        showProgress({
+            ...job.progress,
+            errorEstimate: job.progress?.error_estimate,
+            elapsedSeconds: job.progress?.elapsed_seconds,
+        });
     } catch (e) {
         errors.show(e, null);
         return;
@@ -240,7 +294,9 @@ async function refreshJobs() {
         const { jobs } = await listJobs(20);
         renderJobs($("#jobs"), jobs, { currentId: state.jobId, names, open: openJob });
     } catch (e) {
-        $("#jobs").replaceChildren(Object.assign(document.createElement("li"), { textContent: e.message }));
+        $("#jobs").replaceChildren(
+            Object.assign(document.createElement("li"), { textContent: e.message }),
+        );
     }
 }
 

@@ -3,7 +3,13 @@
 // tiles (grids) and markers (points), and an orbit camera. Renders on demand, not every frame.
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
-import { falseColour, grey, luminanceFromRadiosity, luminanceTop, niceCeiling } from "./colour_scale.js";
+import {
+    falseColour,
+    grey,
+    luminanceFromRadiosity,
+    luminanceTop,
+    niceCeiling,
+} from "./colour_scale.js";
 
 const BACKGROUND = 0x1d2229;
 /// In false-colour mode the room is drawn this much darker, so the sensors stand out.
@@ -65,7 +71,10 @@ export class RoomView {
         const geometry = new THREE.BufferGeometry();
         geometry.setAttribute("position", new THREE.BufferAttribute(mesh.positions, 3));
         geometry.setIndex(new THREE.BufferAttribute(mesh.indices, 1));
-        geometry.setAttribute("color", new THREE.BufferAttribute(new Float32Array(mesh.positions.length).fill(0.15), 3));
+        geometry.setAttribute(
+            "color",
+            new THREE.BufferAttribute(new Float32Array(mesh.positions.length).fill(0.15), 3),
+        );
         geometry.computeBoundingBox();
         geometry.computeBoundingSphere();
         if (this.room) {
@@ -74,7 +83,10 @@ export class RoomView {
             this.room.material.dispose();
         }
         // Back faces are not drawn: from outside, a room's near walls and ceiling do not hide it.
-        this.room = new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({ vertexColors: true, side: THREE.FrontSide }));
+        this.room = new THREE.Mesh(
+            geometry,
+            new THREE.MeshBasicMaterial({ vertexColors: true, side: THREE.FrontSide }),
+        );
         this.scene.add(this.room);
         this.meshVersion = mesh.meshVersion;
         this.radiosity = null;
@@ -85,7 +97,8 @@ export class RoomView {
     /// Per-vertex radiosity (lm/m²) of the current mesh; false when it does not fit that mesh.
     setRadiosity(radiosity) {
         if (!this.room || radiosity.meshVersion !== this.meshVersion) return false;
-        if (radiosity.vertexRadiosity.length !== this.room.geometry.attributes.position.count) return false;
+        if (radiosity.vertexRadiosity.length !== this.room.geometry.attributes.position.count)
+            return false;
         this.radiosity = radiosity.vertexRadiosity;
         this.recolour();
         return true;
@@ -137,7 +150,8 @@ export class RoomView {
         const { layouts, illuminance } = this.sensorData;
         const top = this.luxTop();
         const lux = this.mode === "lux";
-        const colourOf = (set, i) => (lux ? falseColour((illuminance[set]?.[i] ?? NaN) / top) : [1, 1, 1]);
+        const colourOf = (set, i) =>
+            lux ? falseColour((illuminance[set]?.[i] ?? NaN) / top) : [1, 1, 1];
         const tiles = [];
         const tileColours = [];
         const markers = [];
@@ -167,7 +181,10 @@ export class RoomView {
         const box = this.room.geometry.boundingBox;
         const centre = box.getCenter(new THREE.Vector3());
         const radius = Math.max(this.room.geometry.boundingSphere.radius, 0.1);
-        const fit = radius / Math.sin(THREE.MathUtils.degToRad(this.camera.fov / 2)) / Math.min(1, this.camera.aspect);
+        const fit =
+            radius /
+            Math.sin(THREE.MathUtils.degToRad(this.camera.fov / 2)) /
+            Math.min(1, this.camera.aspect);
         const direction = new THREE.Vector3(-0.45, -1, 1.1).normalize();
         this.camera.position.copy(centre).addScaledVector(direction, fit * 0.95);
         this.camera.near = fit / 100;
@@ -216,11 +233,18 @@ function tileMesh(tiles, colours) {
     geometry.setAttribute("position", new THREE.BufferAttribute(positions, 3));
     geometry.setAttribute("color", new THREE.BufferAttribute(colourData, 3));
     geometry.setIndex(indices);
-    return new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({ vertexColors: true, side: THREE.DoubleSide }));
+    return new THREE.Mesh(
+        geometry,
+        new THREE.MeshBasicMaterial({ vertexColors: true, side: THREE.DoubleSide }),
+    );
 }
 
 function markerMesh(markers, radius) {
-    const mesh = new THREE.InstancedMesh(new THREE.OctahedronGeometry(radius), new THREE.MeshBasicMaterial(), markers.length);
+    const mesh = new THREE.InstancedMesh(
+        new THREE.OctahedronGeometry(radius),
+        new THREE.MeshBasicMaterial(),
+        markers.length,
+    );
     const matrix = new THREE.Matrix4();
     const colour = new THREE.Color();
     markers.forEach(({ p, colour: [r, g, b] }, i) => {

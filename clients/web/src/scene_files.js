@@ -76,7 +76,9 @@ function isReference(obj, reference, inline) {
 
 /// Puts `inline` where `reference` was, keeping the other keys' order.
 function replaceKey(obj, reference, inline, value) {
-    const entries = Object.entries(obj).map(([k, v]) => (k === reference ? [inline, value] : [k, v]));
+    const entries = Object.entries(obj).map(([k, v]) =>
+        k === reference ? [inline, value] : [k, v],
+    );
     for (const key of Object.keys(obj)) delete obj[key];
     Object.assign(obj, Object.fromEntries(entries));
 }
@@ -159,7 +161,9 @@ export async function inlineFiles(scene, read) {
             const bytes = await readAt(read, path, at);
             let glb;
             try {
-                glb = await selfContainedGlb(bytes, (uri) => read(joinPath(dirname(path), decodeURIComponent(uri))));
+                glb = await selfContainedGlb(bytes, (uri) =>
+                    read(joinPath(dirname(path), decodeURIComponent(uri))),
+                );
             } catch (e) {
                 throw new SceneFileError(at, `cannot read ${path}: ${e.message}`);
             }
@@ -169,9 +173,18 @@ export async function inlineFiles(scene, read) {
     }
     const luminaires = Array.isArray(scene.luminaires) ? scene.luminaires : [];
     for (const [i, luminaire] of luminaires.entries()) {
-        const distribution = luminaire && typeof luminaire === "object" ? luminaire.distribution : null;
-        if (distribution === null || typeof distribution !== "object" || Array.isArray(distribution)) continue;
-        for (const [reference, inline] of [["ies_file", "ies"], ["ldt_file", "ldt"]]) {
+        const distribution =
+            luminaire && typeof luminaire === "object" ? luminaire.distribution : null;
+        if (
+            distribution === null ||
+            typeof distribution !== "object" ||
+            Array.isArray(distribution)
+        )
+            continue;
+        for (const [reference, inline] of [
+            ["ies_file", "ies"],
+            ["ldt_file", "ldt"],
+        ]) {
             if (!isReference(distribution, reference, inline)) continue;
             const path = distribution[reference];
             const bytes = await readAt(read, path, `/luminaires/${i}/distribution/${reference}`);
@@ -192,7 +205,8 @@ export async function sceneBody(text, read) {
     } catch {
         return { scene: null, body: text };
     }
-    if (scene === null || typeof scene !== "object" || Array.isArray(scene)) return { scene: null, body: text };
+    if (scene === null || typeof scene !== "object" || Array.isArray(scene))
+        return { scene: null, body: text };
     const changed = (await inlineFiles(scene, read)) > 0;
     return { scene, body: changed ? JSON.stringify(scene) : text };
 }

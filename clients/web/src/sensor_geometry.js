@@ -21,7 +21,14 @@ function gridPoints(grid) {
 }
 
 const validGrid = (g) =>
-    g && isVec3(g.origin) && isVec3(g.u) && isVec3(g.v) && Number.isInteger(g.nu) && Number.isInteger(g.nv) && g.nu > 0 && g.nv > 0;
+    g &&
+    isVec3(g.origin) &&
+    isVec3(g.u) &&
+    isVec3(g.v) &&
+    Number.isInteger(g.nu) &&
+    Number.isInteger(g.nv) &&
+    g.nu > 0 &&
+    g.nv > 0;
 
 /// One cell's sides (u/nu, v/nv), for drawing a grid point as a tile.
 const cellOf = (g, s) => ({ u: scaled(g.u, s / g.nu), v: scaled(g.v, s / g.nv) });
@@ -34,7 +41,11 @@ export function sensorLayouts(result, scene) {
     const scale = METRES_PER_UNIT[scene?.units ?? "m"] ?? 1;
     return sets.map((set, i) => {
         const fromScene = sceneSets.find((s) => s?.name === set.name) ?? sceneSets[i] ?? {};
-        const normal = isVec3(set.normal) ? set.normal : isVec3(fromScene.normal) ? fromScene.normal : [0, 0, 1];
+        const normal = isVec3(set.normal)
+            ? set.normal
+            : isVec3(fromScene.normal)
+              ? fromScene.normal
+              : [0, 0, 1];
         const layout = { name: set.name, points: [], normal, cell: null };
         if (validGrid(set.grid) && Array.isArray(set.grid.points)) {
             layout.points = set.grid.points.filter(isVec3);

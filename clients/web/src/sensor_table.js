@@ -2,7 +2,8 @@
 // U₀ = E_min / Ē (EN 12464-1), as the result gives them.
 import { formatValue } from "./colour_scale.js";
 
-const cell = (tag, text, className) => Object.assign(document.createElement(tag), { textContent: text, className: className ?? "" });
+const cell = (tag, text, className) =>
+    Object.assign(document.createElement(tag), { textContent: text, className: className ?? "" });
 
 export function renderSensorTable(table, result) {
     const body = table.querySelector("tbody");

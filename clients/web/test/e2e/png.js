@@ -7,7 +7,9 @@ export function decodePng(bytes) {
     const buffer = Buffer.from(bytes);
     if (buffer.readUInt32BE(0) !== 0x89504e47) throw new Error("not a PNG");
     let offset = 8;
-    let width = 0, height = 0, channels = 0;
+    let width = 0,
+        height = 0,
+        channels = 0;
     const data = [];
     while (offset < buffer.length) {
         const length = buffer.readUInt32BE(offset);
@@ -18,7 +20,8 @@ export function decodePng(bytes) {
             height = chunk.readUInt32BE(4);
             const [depth, colour, , , interlace] = chunk.subarray(8, 13);
             channels = { 2: 3, 6: 4 }[colour];
-            if (depth !== 8 || !channels || interlace !== 0) throw new Error("unsupported PNG layout");
+            if (depth !== 8 || !channels || interlace !== 0)
+                throw new Error("unsupported PNG layout");
         } else if (type === "IDAT") {
             data.push(chunk);
         }
@@ -42,7 +45,9 @@ export function decodePng(bytes) {
             else if (filter === 3) predictor = (a + b) >> 1;
             else if (filter === 4) {
                 const p = a + b - c;
-                const pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c);
+                const pa = Math.abs(p - a),
+                    pb = Math.abs(p - b),
+                    pc = Math.abs(p - c);
                 predictor = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
             }
             out[i] = (line[i] + predictor) & 0xff;

@@ -7,17 +7,23 @@ import { join } from "node:path";
 import { createInterface } from "node:readline";
 import { chromium } from "playwright-core";
 
-export const RADIANTD = process.env.RADIANTD ?? new URL("../../../../build/bin/radiantd", import.meta.url).pathname;
+export const RADIANTD =
+    process.env.RADIANTD ?? new URL("../../../../build/bin/radiantd", import.meta.url).pathname;
 const CHROMIUM = process.env.CHROMIUM ?? "/usr/bin/chromium";
 /// Where screenshots go (ctest sets it inside the build tree).
-export const SCREENSHOTS = process.env.RADIANT_WEB_SCREENSHOTS ?? join(tmpdir(), "radiant-web-screenshots");
+export const SCREENSHOTS =
+    process.env.RADIANT_WEB_SCREENSHOTS ?? join(tmpdir(), "radiant-web-screenshots");
 
 /// Starts `binary` (default RADIANTD) on 127.0.0.1 with a new --data; resolves to {url, stop()}.
 export async function startDaemon(args = [], binary = RADIANTD) {
     const dir = mkdtempSync(join(tmpdir(), "radiant-web-"));
-    const child = spawn(binary, ["--listen", "127.0.0.1:0", "--data", join(dir, "data"), "--workers", "1", ...args], {
-        stdio: ["ignore", "pipe", "pipe"],
-    });
+    const child = spawn(
+        binary,
+        ["--listen", "127.0.0.1:0", "--data", join(dir, "data"), "--workers", "1", ...args],
+        {
+            stdio: ["ignore", "pipe", "pipe"],
+        },
+    );
     let log = "";
     child.stderr.on("data", (d) => (log += d));
     const line = await new Promise((resolve, reject) => {
@@ -35,7 +41,9 @@ export async function startDaemon(args = [], binary = RADIANTD) {
         log: () => log,
         async stop() {
             child.kill("SIGTERM");
-            await new Promise((resolve) => (child.exitCode !== null ? resolve() : child.on("exit", resolve)));
+            await new Promise((resolve) =>
+                child.exitCode !== null ? resolve() : child.on("exit", resolve),
+            );
             rmSync(dir, { recursive: true, force: true });
         },
     };
@@ -50,8 +58,14 @@ export async function launchBrowser() {
         headless: true,
         viewport: { width: 1280, height: 800 },
         args: [
-            "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-            "--disable-background-networking", "--disable-component-update", "--disable-sync",
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
         ],
     });
     return {

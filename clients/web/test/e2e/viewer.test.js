@@ -20,9 +20,29 @@ function lampRoom(settings = {}) {
         format: "radiant-scene/1",
         name: "lamp-room",
         materials: { wall: { reflectance: 0.5 } },
-        surfaces: [{ name: "room", material: "wall", box: { min: [0, 0, 0], max: [4, 4, 3], facing: "in" } }],
-        luminaires: [{ name: "downlight", position: LAMP, flux: 3000, distribution: "lambertian", aim: [0, 0, -1] }],
-        sensors: [{ name: "workplane", normal: [0, 0, 1], grid: { origin: [0.25, 0.25, 0.8], u: [3.5, 0, 0], v: [0, 3.5, 0], nu: 7, nv: 7 } }],
+        surfaces: [
+            {
+                name: "room",
+                material: "wall",
+                box: { min: [0, 0, 0], max: [4, 4, 3], facing: "in" },
+            },
+        ],
+        luminaires: [
+            {
+                name: "downlight",
+                position: LAMP,
+                flux: 3000,
+                distribution: "lambertian",
+                aim: [0, 0, -1],
+            },
+        ],
+        sensors: [
+            {
+                name: "workplane",
+                normal: [0, 0, 1],
+                grid: { origin: [0.25, 0.25, 0.8], u: [3.5, 0, 0], v: [0, 3.5, 0], nu: 7, nv: 7 },
+            },
+        ],
         settings: { tolerance: 0.02, ...settings },
     };
 }
@@ -49,7 +69,9 @@ async function drop(files) {
     await page.evaluate((list) => {
         const transfer = new DataTransfer();
         for (const f of list) transfer.items.add(new File([f.text], f.name));
-        window.dispatchEvent(new DragEvent("drop", { dataTransfer: transfer, bubbles: true, cancelable: true }));
+        window.dispatchEvent(
+            new DragEvent("drop", { dataTransfer: transfer, bubbles: true, cancelable: true }),
+        );
     }, files);
 }
 
@@ -58,7 +80,9 @@ async function submitAndWait(timeout = 60000) {
     const before = await page.evaluate(() => window.radiantViewer.state.jobId);
     await page.click("#submit");
     await page.waitForFunction((old) => window.radiantViewer.state.jobId !== old, before);
-    await page.waitForFunction(() => window.radiantViewer.state.resultStatus !== null, null, { timeout });
+    await page.waitForFunction(() => window.radiantViewer.state.resultStatus !== null, null, {
+        timeout,
+    });
     await page.waitForTimeout(200); // the last frame
     return page.evaluate(() => structuredClone(window.radiantViewer.state));
 }
@@ -82,7 +106,9 @@ const brightness = ([r, g, b]) => 0.2126 * r + 0.7152 * g + 0.0722 * b;
 
 test("a dropped room converges: the room is drawn and the floor under its lamp is brightest", async () => {
     await drop([{ name: "lamp-room.json", text: JSON.stringify(lampRoom()) }]);
-    await page.waitForFunction(() => document.querySelector("#scene-summary").textContent.startsWith("lamp-room"));
+    await page.waitForFunction(() =>
+        document.querySelector("#scene-summary").textContent.startsWith("lamp-room"),
+    );
     const state = await submitAndWait();
     assert.equal(state.status, "done");
     assert.equal(state.resultStatus, "converged");
@@ -109,16 +135,23 @@ test("a dropped room converges: the room is drawn and the floor under its lamp i
 
     // The floor under the lamp is brighter than the floor at the other three corners.
     const under = brightness(await colourAt(png, [LAMP[0], LAMP[1], 0]));
-    for (const corner of [[3, 3, 0], [3, 1, 0], [1, 3, 0]]) {
+    for (const corner of [
+        [3, 3, 0],
+        [3, 1, 0],
+        [1, 3, 0],
+    ]) {
         const other = brightness(await colourAt(png, corner));
-        assert.ok(under > other * 1.15, `floor under the lamp ${under.toFixed(0)} vs ${corner}: ${other.toFixed(0)}`);
+        assert.ok(
+            under > other * 1.15,
+            `floor under the lamp ${under.toFixed(0)} vs ${corner}: ${other.toFixed(0)}`,
+        );
     }
     // The luminance legend.
     assert.equal(await page.locator("#legend").getAttribute("data-kind"), "luminance");
     assert.match(await page.locator(".legend-title").textContent(), /cd\/m²/);
 });
 
-test("false colour lux: the legend runs blue to red, the lamp's tile is hottest, the table is the result's", async () => {
+test("false colour lux: a blue-to-red legend, the lamp's tile hottest, the result's table", async () => {
     await page.check("input[value=lux]");
     await page.waitForTimeout(200);
     const png = decodePng(await screenshot(page, "lamp-room-lux"));
@@ -155,8 +188,15 @@ test("false colour lux: the legend runs blue to red, the lamp's tile is hottest,
 });
 
 test("mesh versions: a hierarchical solve's refined meshes are followed to the final one", async () => {
-    await drop([{ name: "lamp-room.json", text: JSON.stringify(lampRoom({ method: "hierarchical", tolerance: 0.05 })) }]);
-    await page.waitForFunction(() => document.querySelector("#scene-summary").textContent.startsWith("lamp-room"));
+    await drop([
+        {
+            name: "lamp-room.json",
+            text: JSON.stringify(lampRoom({ method: "hierarchical", tolerance: 0.05 })),
+        },
+    ]);
+    await page.waitForFunction(() =>
+        document.querySelector("#scene-summary").textContent.startsWith("lamp-room"),
+    );
     const state = await submitAndWait(120000);
     assert.ok(new Set(state.meshVersions).size >= 2, `mesh versions ${state.meshVersions}`);
     const final = await serviceJson(`v1/jobs/${state.jobId}/result?include=mesh`);
@@ -166,11 +206,17 @@ test("mesh versions: a hierarchical solve's refined meshes are followed to the f
 
 test("the furnished office, dropped with its OBJ, MTL and IES files, converges with its table", async () => {
     const folder = join(EXAMPLES, "furnished-office");
-    await drop(["furnished-office.json", "furniture.obj", "furniture.mtl", "downlight.ies"].map((name) => ({
-        name,
-        text: readFileSync(join(folder, name), "utf8"),
-    })));
-    await page.waitForFunction(() => document.querySelector("#scene-summary").textContent.includes("files inlined"));
+    await drop(
+        ["furnished-office.json", "furniture.obj", "furniture.mtl", "downlight.ies"].map(
+            (name) => ({
+                name,
+                text: readFileSync(join(folder, name), "utf8"),
+            }),
+        ),
+    );
+    await page.waitForFunction(() =>
+        document.querySelector("#scene-summary").textContent.includes("files inlined"),
+    );
     const state = await submitAndWait();
     assert.equal(state.resultStatus, "converged");
     const result = await serviceJson(`v1/jobs/${state.jobId}/result`);
@@ -199,7 +245,9 @@ test("a refused scene is shown at its JSON pointer", async () => {
     const bad = lampRoom();
     bad.materials.wall.reflectance = 1.5;
     await drop([{ name: "bad.json", text: JSON.stringify(bad, null, 2) }]);
-    await page.waitForFunction(() => document.querySelector("#scene-summary").textContent.startsWith("lamp-room"));
+    await page.waitForFunction(() =>
+        document.querySelector("#scene-summary").textContent.startsWith("lamp-room"),
+    );
     await page.click("#submit");
     const problem = page.locator('#errors .problem[data-pointer="/materials/wall/reflectance"]');
     await problem.waitFor();
@@ -211,7 +259,10 @@ test("a refused scene is shown at its JSON pointer", async () => {
     // The highlighted line is drawn in the highlight colour (#ffc9c9) beside its text.
     const where = await line.boundingBox();
     const [r, g, b] = png.pixel(where.x + where.width - 6, where.y + where.height / 2);
-    assert.ok(r > 240 && Math.abs(g - 0xc9) < 12 && Math.abs(b - 0xc9) < 12, `highlight ${[r, g, b]}`);
+    assert.ok(
+        r > 240 && Math.abs(g - 0xc9) < 12 && Math.abs(b - 0xc9) < 12,
+        `highlight ${[r, g, b]}`,
+    );
 });
 
 test("a file the scene names but that was not dropped is an error at its reference", async () => {
@@ -228,19 +279,34 @@ test("a file the scene names but that was not dropped is an error at its referen
 test("an example is opened, cancelled while it runs, and past jobs reopen", async () => {
     await page.selectOption("#examples", "cornell-box.json");
     await page.click("#open-example");
-    await page.waitForFunction(() => document.querySelector("#scene-summary").textContent.startsWith("cornell"));
+    await page.waitForFunction(() =>
+        document.querySelector("#scene-summary").textContent.startsWith("cornell"),
+    );
     await page.click("#submit");
     // Running, with a first picture drawn.
-    await page.waitForFunction(() => window.radiantViewer.state.status === "running" && window.radiantViewer.state.snapshotVersion !== null, null, { timeout: 60000 });
+    await page.waitForFunction(
+        () =>
+            window.radiantViewer.state.status === "running" &&
+            window.radiantViewer.state.snapshotVersion !== null,
+        null,
+        { timeout: 60000 },
+    );
     assert.ok(Number(await page.locator("#progress").getAttribute("data-error-estimate")) >= 0);
     await page.click("#cancel");
-    await page.waitForFunction(() => window.radiantViewer.state.status === "cancelled", null, { timeout: 30000 });
+    await page.waitForFunction(() => window.radiantViewer.state.status === "cancelled", null, {
+        timeout: 30000,
+    });
     const cancelledId = await page.evaluate(() => window.radiantViewer.state.jobId);
 
     // Every job of this session is listed, newest first, with its status.
     await page.click("#refresh-jobs");
-    await page.waitForFunction((id) => document.querySelector("#jobs button")?.dataset.job === id, cancelledId);
-    const listed = await page.locator("#jobs button").evaluateAll((buttons) => buttons.map((b) => [b.dataset.job, b.dataset.status]));
+    await page.waitForFunction(
+        (id) => document.querySelector("#jobs button")?.dataset.job === id,
+        cancelledId,
+    );
+    const listed = await page
+        .locator("#jobs button")
+        .evaluateAll((buttons) => buttons.map((b) => [b.dataset.job, b.dataset.status]));
     const jobs = (await serviceJson("v1/jobs?limit=20")).jobs.map((j) => [j.id, j.status]);
     assert.deepEqual(listed, jobs);
     assert.equal(listed[0][1], "cancelled");
@@ -248,7 +314,12 @@ test("an example is opened, cancelled while it runs, and past jobs reopen", asyn
     // Reopening the furnished office draws its final mesh again.
     const office = listed.find(([, status]) => status === "done");
     await page.click(`#jobs button[data-job="${office[0]}"]`);
-    await page.waitForFunction((id) => window.radiantViewer.state.jobId === id && window.radiantViewer.state.resultStatus !== null, office[0]);
+    await page.waitForFunction(
+        (id) =>
+            window.radiantViewer.state.jobId === id &&
+            window.radiantViewer.state.resultStatus !== null,
+        office[0],
+    );
     const state = await page.evaluate(() => window.radiantViewer.state);
     assert.ok(state.vertices > 0 && state.snapshotVersion !== null);
 });

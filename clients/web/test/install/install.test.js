@@ -13,7 +13,9 @@ test("the installed daemon serves the installed viewer", async () => {
     assert.ok(build, "RADIANT_BUILD_DIR names the build tree");
     const prefix = mkdtempSync(join(tmpdir(), "radiant-install-"));
     try {
-        execFileSync(process.env.CMAKE ?? "cmake", ["--install", build, "--prefix", prefix], { stdio: "pipe" });
+        execFileSync(process.env.CMAKE ?? "cmake", ["--install", build, "--prefix", prefix], {
+            stdio: "pipe",
+        });
         const daemon = await startDaemon([], join(prefix, "bin", "radiantd"));
         try {
             const page = await fetch(daemon.url);

@@ -1,6 +1,16 @@
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { falseColour, formatValue, grey, luminanceTop, niceCeiling, quantile, srgbDecode, srgbEncode, ticks } from "../../src/colour_scale.js";
+import {
+    falseColour,
+    formatValue,
+    grey,
+    luminanceTop,
+    niceCeiling,
+    quantile,
+    srgbDecode,
+    srgbEncode,
+    ticks,
+} from "../../src/colour_scale.js";
 
 test("false colour runs from blue to red through green", () => {
     const [r0, g0, b0] = falseColour(0);
@@ -21,7 +31,8 @@ test("grey is linear and clamped", () => {
 });
 
 test("sRGB encoding round-trips", () => {
-    for (const x of [0, 0.002, 0.2, 0.5, 1]) assert.ok(Math.abs(srgbDecode(srgbEncode(x)) - x) < 1e-9);
+    for (const x of [0, 0.002, 0.2, 0.5, 1])
+        assert.ok(Math.abs(srgbDecode(srgbEncode(x)) - x) < 1e-9);
     assert.ok(Math.abs(srgbEncode(0.5) - 0.7354) < 1e-3);
 });
 

@@ -5,8 +5,16 @@ import { decodeEvent, EventFormatError } from "../../src/events.js";
 const mesh = {
     id: "j",
     mesh_version: 2,
-    vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.5]],
-    triangles: [[0, 1, 2], [1, 3, 2]],
+    vertices: [
+        [0, 0, 0],
+        [1, 0, 0],
+        [0, 1, 0],
+        [1, 1, 0.5],
+    ],
+    triangles: [
+        [0, 1, 2],
+        [1, 3, 2],
+    ],
     triangle_surface: [0, 1],
 };
 
@@ -23,9 +31,17 @@ test("a radiosity event keeps its versions and values", () => {
     const r = decodeEvent(
         "radiosity",
         JSON.stringify({
-            id: "j", mesh_version: 2, version: 7, final: false, stage: "shooting", fraction: 0.5,
-            iterations: 3, error_estimate: 0.02, elapsed_seconds: 1.5,
-            triangle_radiosity: [10, 20], vertex_radiosity: [1, 2, 3, 4.5],
+            id: "j",
+            mesh_version: 2,
+            version: 7,
+            final: false,
+            stage: "shooting",
+            fraction: 0.5,
+            iterations: 3,
+            error_estimate: 0.02,
+            elapsed_seconds: 1.5,
+            triangle_radiosity: [10, 20],
+            vertex_radiosity: [1, 2, 3, 4.5],
         }),
     );
     assert.equal(r.meshVersion, 2);
@@ -37,10 +53,22 @@ test("a radiosity event keeps its versions and values", () => {
 });
 
 test("progress and done", () => {
-    const p = decodeEvent("progress", '{"status":"running","stage":"gather","fraction":0.25,"error_estimate":0.1}');
-    assert.deepEqual([p.status, p.stage, p.fraction, p.errorEstimate], ["running", "gather", 0.25, 0.1]);
-    assert.deepEqual(decodeEvent("done", '{"id":"j","status":"failed","error":"boom"}'), { status: "failed", error: "boom" });
-    assert.deepEqual(decodeEvent("done", '{"id":"j","status":"done"}'), { status: "done", error: null });
+    const p = decodeEvent(
+        "progress",
+        '{"status":"running","stage":"gather","fraction":0.25,"error_estimate":0.1}',
+    );
+    assert.deepEqual(
+        [p.status, p.stage, p.fraction, p.errorEstimate],
+        ["running", "gather", 0.25, 0.1],
+    );
+    assert.deepEqual(decodeEvent("done", '{"id":"j","status":"failed","error":"boom"}'), {
+        status: "failed",
+        error: "boom",
+    });
+    assert.deepEqual(decodeEvent("done", '{"id":"j","status":"done"}'), {
+        status: "done",
+        error: null,
+    });
 });
 
 test("malformed events are refused, not drawn", () => {

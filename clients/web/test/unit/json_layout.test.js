@@ -5,7 +5,17 @@ import { excerpt, layoutJson } from "../../src/json_layout.js";
 const scene = {
     format: "radiant-scene/1",
     materials: { wall: { reflectance: 1.5 }, "a/b~c": { reflectance: 0.2 } },
-    surfaces: [{ name: "floor", material: "wall", polygon: [[0, 0, 0], [4, 0, 0], [4, 4, 0]] }],
+    surfaces: [
+        {
+            name: "floor",
+            material: "wall",
+            polygon: [
+                [0, 0, 0],
+                [4, 0, 0],
+                [4, 4, 0],
+            ],
+        },
+    ],
     luminaires: [{ distribution: { ies: "x".repeat(500) } }],
 };
 
@@ -20,7 +30,10 @@ test("every pointer knows its lines", () => {
     assert.equal(polygon.last - polygon.first, 4);
     assert.equal(spans.get("").first, 0);
     assert.equal(spans.get("").last, lines.length - 1);
-    assert.deepEqual(JSON.parse(layoutJson({ a: [1, 2], b: {} }).lines.join("\n")), { a: [1, 2], b: {} });
+    assert.deepEqual(JSON.parse(layoutJson({ a: [1, 2], b: {} }).lines.join("\n")), {
+        a: [1, 2],
+        b: {},
+    });
 });
 
 test("long strings are shortened", () => {

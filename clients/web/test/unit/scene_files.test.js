@@ -21,7 +21,10 @@ test("the furnished office inlines its OBJ, MTL and IES files like the CLI reads
     assert.ok(!("obj_file" in model));
     // The inline key takes the reference's place.
     const keys = Object.keys(JSON.parse(text).surfaces.find((s) => "obj_file" in s));
-    assert.deepEqual(Object.keys(model).slice(0, keys.length), keys.map((k) => (k === "obj_file" ? "obj" : k)));
+    assert.deepEqual(
+        Object.keys(model).slice(0, keys.length),
+        keys.map((k) => (k === "obj_file" ? "obj" : k)),
+    );
     const ies = readFileSync(join(folder, "downlight.ies"), "utf8");
     assert.ok(sent.luminaires.length > 0);
     for (const l of sent.luminaires) assert.equal(l.distribution.ies, ies);
@@ -37,7 +40,10 @@ test("a scene without references is sent as its own text", async () => {
 
 test("a missing file is an error at the reference's pointer", async () => {
     const scene = {
-        surfaces: [{ name: "a", polygon: [] }, { name: "m", obj_file: "chair.obj" }],
+        surfaces: [
+            { name: "a", polygon: [] },
+            { name: "m", obj_file: "chair.obj" },
+        ],
         luminaires: [{ distribution: { ldt_file: "lamp.ldt" } }],
     };
     const read = async (path) => {
@@ -50,20 +56,32 @@ test("a missing file is an error at the reference's pointer", async () => {
         return true;
     });
     scene.surfaces.pop();
-    await assert.rejects(inlineFiles(scene, read), { pointer: "/luminaires/0/distribution/ldt_file" });
+    await assert.rejects(inlineFiles(scene, read), {
+        pointer: "/luminaires/0/distribution/ldt_file",
+    });
 });
 
 test("a reference beside its inline form is left for the service to refuse", async () => {
-    const scene = { surfaces: [{ obj_file: "a.obj", obj: "v 0 0 0" }], luminaires: [{ distribution: { ies_file: 3 } }] };
+    const scene = {
+        surfaces: [{ obj_file: "a.obj", obj: "v 0 0 0" }],
+        luminaires: [{ distribution: { ies_file: 3 } }],
+    };
     assert.equal(await inlineFiles(scene, async () => assert.fail("no read")), 0);
 });
 
 test("mtllib statements split like tinyobjloader", () => {
-    assert.deepEqual(mtllibNames("v 1 2 3\nmtllib a.mtl b.mtl\n  mtllib my\\ file.mtl\nmtllibx c"), [["a.mtl", "b.mtl"], ["my file.mtl"]]);
+    assert.deepEqual(
+        mtllibNames("v 1 2 3\nmtllib a.mtl b.mtl\n  mtllib my\\ file.mtl\nmtllibx c"),
+        [["a.mtl", "b.mtl"], ["my file.mtl"]],
+    );
 });
 
 test("an OBJ's first readable MTL per statement, joined", async () => {
-    const files = { "m/x.obj": "mtllib gone.mtl one.mtl\nmtllib two.mtl\n", "m/one.mtl": "newmtl one", "m/two.mtl": "newmtl two" };
+    const files = {
+        "m/x.obj": "mtllib gone.mtl one.mtl\nmtllib two.mtl\n",
+        "m/one.mtl": "newmtl one",
+        "m/two.mtl": "newmtl two",
+    };
     const read = async (p) => {
         if (!(p in files)) throw new Error("missing");
         return new TextEncoder().encode(files[p]);
@@ -82,10 +100,13 @@ test("non-UTF-8 text (an old IES file) is read as Latin-1", async () => {
 test("a .gltf with an external buffer becomes one .glb", async () => {
     const bin = Uint8Array.from([1, 2, 3, 4, 5]);
     const gltf = { asset: { version: "2.0" }, buffers: [{ uri: "mesh.bin", byteLength: 5 }] };
-    const glb = await selfContainedGlb(new TextEncoder().encode(JSON.stringify(gltf)), async (uri) => {
-        assert.equal(uri, "mesh.bin");
-        return bin;
-    });
+    const glb = await selfContainedGlb(
+        new TextEncoder().encode(JSON.stringify(gltf)),
+        async (uri) => {
+            assert.equal(uri, "mesh.bin");
+            return bin;
+        },
+    );
     const view = new DataView(glb.buffer);
     assert.equal(view.getUint32(0, true), 0x46546c67);
     assert.equal(view.getUint32(8, true), glb.length);
