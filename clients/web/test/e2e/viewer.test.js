@@ -15,10 +15,10 @@ const BACKGROUND = [0x1d, 0x22, 0x29];
 const LAMP = [1, 1, 2.8];
 
 /// A 4 × 4 × 3 m room with one downlight off-centre, over a 7 × 7 work-plane grid.
-function lampRoom(settings = {}) {
+function lampRoom(name, settings = {}) {
     return {
         format: "radiant-scene/1",
-        name: "lamp-room",
+        name,
         materials: { wall: { reflectance: 0.5 } },
         surfaces: [
             {
@@ -75,6 +75,15 @@ async function drop(files) {
     }, files);
 }
 
+/// Drops `scene` as a file and waits until the viewer has loaded it (the summary names it).
+async function dropScene(scene, text = JSON.stringify(scene)) {
+    await drop([{ name: `${scene.name}.json`, text }]);
+    await page.waitForFunction(
+        (name) => document.querySelector("#scene-summary").textContent.startsWith(`${name}:`),
+        scene.name,
+    );
+}
+
 async function submitAndWait(timeout = 60000) {
     await page.waitForFunction(() => !document.querySelector("#submit").disabled);
     const before = await page.evaluate(() => window.radiantViewer.state.jobId);
@@ -105,10 +114,7 @@ async function colourAt(png, p) {
 const brightness = ([r, g, b]) => 0.2126 * r + 0.7152 * g + 0.0722 * b;
 
 test("a dropped room converges: the room is drawn and the floor under its lamp is brightest", async () => {
-    await drop([{ name: "lamp-room.json", text: JSON.stringify(lampRoom()) }]);
-    await page.waitForFunction(() =>
-        document.querySelector("#scene-summary").textContent.startsWith("lamp-room"),
-    );
+    await dropScene(lampRoom("lamp-room"));
     const state = await submitAndWait();
     assert.equal(state.status, "done");
     assert.equal(state.resultStatus, "converged");
@@ -188,14 +194,8 @@ test("false colour lux: a blue-to-red legend, the lamp's tile hottest, the resul
 });
 
 test("mesh versions: a hierarchical solve's refined meshes are followed to the final one", async () => {
-    await drop([
-        {
-            name: "lamp-room.json",
-            text: JSON.stringify(lampRoom({ method: "hierarchical", tolerance: 0.05 })),
-        },
-    ]);
-    await page.waitForFunction(() =>
-        document.querySelector("#scene-summary").textContent.startsWith("lamp-room"),
+    await dropScene(
+        lampRoom("lamp-room-hierarchical", { method: "hierarchical", tolerance: 0.05 }),
     );
     const state = await submitAndWait(120000);
     assert.ok(new Set(state.meshVersions).size >= 2, `mesh versions ${state.meshVersions}`);
@@ -242,12 +242,9 @@ test("the furnished office, dropped with its OBJ, MTL and IES files, converges w
 });
 
 test("a refused scene is shown at its JSON pointer", async () => {
-    const bad = lampRoom();
+    const bad = lampRoom("bad-room");
     bad.materials.wall.reflectance = 1.5;
-    await drop([{ name: "bad.json", text: JSON.stringify(bad, null, 2) }]);
-    await page.waitForFunction(() =>
-        document.querySelector("#scene-summary").textContent.startsWith("lamp-room"),
-    );
+    await dropScene(bad, JSON.stringify(bad, null, 2));
     await page.click("#submit");
     const problem = page.locator('#errors .problem[data-pointer="/materials/wall/reflectance"]');
     await problem.waitFor();
@@ -266,7 +263,7 @@ test("a refused scene is shown at its JSON pointer", async () => {
 });
 
 test("a file the scene names but that was not dropped is an error at its reference", async () => {
-    const scene = lampRoom();
+    const scene = lampRoom("room-with-chair");
     scene.surfaces.push({ name: "chair", material: "wall", obj_file: "chair.obj" });
     await drop([{ name: "with-chair.json", text: JSON.stringify(scene) }]);
     const problem = page.locator('#errors .problem[data-pointer="/surfaces/1/obj_file"]');
