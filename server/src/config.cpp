@@ -6,6 +6,10 @@
 
 namespace radiant::server {
 
+std::filesystem::path default_web_root(const std::filesystem::path& executable) {
+    return (executable.parent_path() / ".." / "share" / "radiant" / "web").lexically_normal();
+}
+
 std::optional<ListenAddress> parse_listen(const std::string& text) {
     const std::size_t colon = text.rfind(':');
     if (colon == std::string::npos || colon == 0 || colon + 1 == text.size()) return std::nullopt;

@@ -5,8 +5,10 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -21,10 +23,12 @@
 #include "radiant/server/listener.h"
 #include "radiant/server/metrics.h"
 #include "radiant/server/router.h"
+#include "radiant/server/static_files.h"
 
 namespace {
 
 namespace net = boost::asio;
+namespace fs = std::filesystem;
 using namespace radiant::server;
 
 int serve(const ServerConfig& config) {
@@ -54,7 +58,14 @@ int serve(const ServerConfig& config) {
     ctx.access.cors_origins = config.cors_origins;
     ctx.access.token = token;
     ctx.listen_host = listen->host;
-    Router router(ctx);
+    StaticFiles web(config.web_root.empty() ? default_web_root(fs::read_symlink("/proc/self/exe"))
+                                            : fs::path(config.web_root));
+    if (web.installed()) {
+        spdlog::info("web viewer from {}", web.root().string());
+    } else {
+        spdlog::warn("no web viewer in {} (no index.html): GET / answers 404", web.root().string());
+    }
+    Router router(ctx, std::move(web));
 
     net::io_context ioc(static_cast<int>(config.io_threads));
     // After the io_context, so that it is joined and destroyed first: its tasks hold sessions.
@@ -136,6 +147,10 @@ int main(int argc, char** argv) {
                    "(repeatable)")
         ->envname("RADIANT_CORS_ORIGIN")
         ->delimiter(',');
+    app.add_option("--web-root", config.web_root,
+                   "the web viewer's files, served at / (default: ../share/radiant/web from the "
+                   "binary)")
+        ->envname("RADIANT_WEB_ROOT");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

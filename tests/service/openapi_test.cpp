@@ -160,6 +160,10 @@ TEST(OpenApi, EveryAnswerMatchesTheSpec) {
     EXPECT_EQ(rec.call(verb::get, events, unknown + "/events").status, 404u);
     EXPECT_EQ(rec.call(verb::get, "/healthz", "/healthz").status, 200u);
     EXPECT_EQ(rec.call(verb::get, "/metrics", "/metrics").status, 200u);
+    // The viewer (200 when the build made it, else 404) and a file that is not there.
+    const unsigned viewer = rec.call(verb::get, "/", "/").status;
+    EXPECT_TRUE(viewer == 200u || viewer == 404u) << viewer;
+    EXPECT_EQ(rec.call(verb::get, "/{file}", "/no-such-file.js").status, 404u);
 
     // Every kind of event was seen, so each event schema was exercised too.
     for (const char* name : {"progress", "mesh", "radiosity", "done"}) {

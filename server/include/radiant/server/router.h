@@ -5,9 +5,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "radiant/server/handlers.h"
 #include "radiant/server/http.h"
+#include "radiant/server/static_files.h"
 
 namespace radiant::server {
 
@@ -27,7 +29,8 @@ Query parse_query(std::string_view query);
 
 class Router {
 public:
-    explicit Router(ServiceContext& ctx) : ctx_(ctx) {}
+    /// `web`: the viewer's files, served at every path outside /v1, /healthz and /metrics.
+    explicit Router(ServiceContext& ctx, StaticFiles web = {}) : ctx_(ctx), web_(std::move(web)) {}
 
     /// Never throws: an exception from a handler becomes a 500 with a JSON error body. Requests
     /// the access policy refuses get their 401 or 403 before any handler runs.
@@ -42,6 +45,7 @@ public:
 private:
     RouteResult dispatch(const Request& request);
     ServiceContext& ctx_;
+    const StaticFiles web_;
 };
 
 }  // namespace radiant::server
