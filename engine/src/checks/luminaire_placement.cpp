@@ -32,10 +32,13 @@ std::vector<bool> check_luminaire_placement(const CheckedScene& input, const Lig
                 ? surface_label(input.scene, static_cast<std::size_t>(first.main_surface))
                 : std::string();
         if (first.directions_black >= kInsideDirections && first.directions_escaped == 0) {
+            // A luminaire without flux has no light to say where it goes.
             out.push_back({"luminaire_inside_solid",
-                           who + " is inside a closed solid: " + percent(first.black_back) +
-                               " of its light falls on the black back of " + surface +
-                               " and its neighbours",
+                           who + " is inside a closed solid" +
+                               (surface.empty() ? std::string()
+                                                : ": " + percent(first.black_back) +
+                                                      " of its light falls on the black back of " +
+                                                      surface + " and its neighbours"),
                            pointer});
         } else if (first.black_back >= kBehindShare) {
             out.push_back(
