@@ -113,6 +113,12 @@ private:
         return static_cast<long long>(d);
     }
 
+    bool boolean(const Json& j, const Ptr& p, const char* what) {
+        if (j.is_boolean()) return j.get<bool>();
+        report(p, std::string(what) + " must be true or false");
+        return false;
+    }
+
     std::string string(const Json& j, const Ptr& p, const char* what) {
         if (j.is_string()) return j.get<std::string>();
         report(p, std::string(what) + " must be a string");
@@ -249,13 +255,8 @@ Material SceneReader::material(const std::string& name, const Json& j, const Ptr
         }
     }
     if (const Json* e = member(j, p, "emission", false)) m.emission = emission(*e, p / "emission");
-    if (const Json* t = member(j, p, "two_sided", false)) {
-        if (t->is_boolean()) {
-            m.two_sided = t->get<bool>();
-        } else {
-            report(p / "two_sided", "two_sided must be true or false");
-        }
-    }
+    if (const Json* t = member(j, p, "two_sided", false))
+        m.two_sided = boolean(*t, p / "two_sided", "two_sided");
     return m;
 }
 
@@ -295,6 +296,7 @@ void SceneReader::add_surfaces(Scene& scene, const Json& j, const Ptr& p, std::s
         surface_origins_.emplace_back(index, "");
         scene.surfaces.push_back(surface(j, p));
         count_geometry(scene.surfaces.back());
+        scene.surfaces.back().pointer = p.to_string();
         return;
     }
     check_keys(j, p, {"name", "material", "mtl", kind->first});
@@ -329,6 +331,7 @@ void SceneReader::add_surfaces(Scene& scene, const Json& j, const Ptr& p, std::s
     for (Surface& s : surfaces) {
         count_geometry(s);
         surface_origins_.emplace_back(index, kind->first);
+        s.pointer = p.to_string();
         scene.surfaces.push_back(std::move(s));
     }
     for (Material& m : materials) scene.materials.push_back(std::move(m));
@@ -560,13 +563,15 @@ std::vector<Vec3> SceneReader::grid(const Json& j, const Ptr& p) {
 Settings SceneReader::settings(const Json& j, const Ptr& p) {
     Settings s;
     if (!object(j, p, "settings")) return s;
-    check_keys(j, p, {"tolerance", "max_seconds", "method"});
+    check_keys(j, p, {"tolerance", "max_seconds", "method", "strict"});
     if (const Json* t = member(j, p, "tolerance", false)) {
         s.tolerance = number(*t, p / "tolerance", "tolerance");
     }
     if (const Json* t = member(j, p, "max_seconds", false)) {
         s.max_seconds = number(*t, p / "max_seconds", "max_seconds");
     }
+    if (const Json* t = member(j, p, "strict", false))
+        s.strict = boolean(*t, p / "strict", "strict");
     if (const Json* m = member(j, p, "method", false)) {
         // The engine's own list, so the parser never accepts a method the engine lacks.
         const auto& methods = solver_names();

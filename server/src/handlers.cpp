@@ -7,6 +7,8 @@
 #include "radiant/proto/result_gltf.h"
 #include "radiant/proto/result_json.h"
 #include "radiant/proto/scene_json.h"
+#include "radiant/proto/warnings_json.h"
+#include "radiant/warnings.h"
 
 namespace radiant::server::handlers {
 namespace {
@@ -75,7 +77,8 @@ nlohmann::json running_result(ServiceContext& ctx, const JobRecord& job,
                             {"error_estimate", p.error_estimate}}},
                           {"progress", job_to_json(job)["progress"]},
                           {"sensors", nlohmann::json::array()},
-                          {"surfaces", nlohmann::json::array()}};
+                          {"surfaces", nlohmann::json::array()},
+                          {"warnings", job.warnings}};
     if (snapshot) {
         doc["snapshot"] = {{"version", snapshot->info().version},
                            {"mesh_version", snapshot->info().mesh_version}};
@@ -91,6 +94,13 @@ std::string add_mesh(std::string document, const CompactMesh& mesh) {
     if (document.empty()) return document;
     document.pop_back();
     return document + ",\"mesh\":{" + geometry_json(mesh) + "," + radiosity_json(mesh) + "}}";
+}
+
+/// Warnings as the problems of a refusal: "message [code]" at the warning's pointer.
+std::vector<Problem> strict_problems(const std::vector<Warning>& warnings) {
+    std::vector<Problem> problems;
+    for (const Warning& w : warnings) problems.push_back({w.pointer, proto::message_with_code(w)});
+    return problems;
 }
 
 }  // namespace
@@ -125,6 +135,15 @@ Response submit_job(ServiceContext& ctx, const Request& request) {
         case proto::Refusal::scene:
             return error_response(request, http::status::bad_request, "invalid_scene", "", "",
                                   outcome.problems);
+    }
+    // A strict scene is refused with its warnings before it is queued. The checks build a ray
+    // tracer over the scene: only strict scenes pay that here (docs/warnings.md).
+    if (outcome.scene->settings.strict) {
+        if (const std::vector<Problem> warned = strict_problems(check_modelling(*outcome.scene));
+            !warned.empty()) {
+            return error_response(request, http::status::bad_request, "strict_warnings", "", "",
+                                  warned);
+        }
     }
     const std::string key(request["Idempotency-Key"]);
     const SubmitOutcome submitted = ctx.jobs.submit(body, key);

@@ -112,6 +112,21 @@ TEST(OpenApi, EveryAnswerMatchesTheSpec) {
     // The queue holds one job: let this one finish before filling it on purpose below.
     ASSERT_EQ(wait_for(d.port(), json::parse(keyed.body)["id"], "done"), "done");
 
+    // A job with warnings, and a strict scene refused for them.
+    const std::string dark_room =
+        R"({"format": "radiant-scene/1", "materials": {"w": {"reflectance": 0.5}},
+            "surfaces": [{"name": "room", "material": "w",
+                          "box": {"min": [0,0,0], "max": [1,1,1]}}],
+            "settings": {"method": "direct", "tolerance": 0.1)";
+    const Reply dark = rec.call(verb::post, jobs, jobs, dark_room + "}}");
+    ASSERT_EQ(dark.status, 202u);
+    const std::string warned = json::parse(dark.body)["id"];
+    ASSERT_EQ(wait_for(d.port(), warned, "done"), "done");
+    EXPECT_EQ(json::parse(rec.call(verb::get, job, jobs + "/" + warned).body)["warnings"].size(),
+              1u);
+    EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + warned + "/result").status, 200u);
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, dark_room + R"(, "strict": true}})").status, 400u);
+
     // A running job, one queued behind it, and a full queue.
     const std::string running =
         json::parse(rec.call(verb::post, jobs, jobs, radiant::test::slow_room()).body)["id"];

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -464,6 +465,63 @@ TEST(AccessPolicy, ConstantTimeEqual) {
     EXPECT_FALSE(constant_time_equal("abc", "abcd"));
     EXPECT_FALSE(constant_time_equal("", "a"));
     EXPECT_TRUE(constant_time_equal("", ""));
+}
+
+/// A scene of tests/data/warnings, with `settings` added.
+std::string mistake(const std::string& name, const json& settings = json::object()) {
+    json scene =
+        json::parse(radiant::test::read_text(std::string(RADIANT_TEST_DATA) + "/warnings/" + name));
+    scene["settings"] = settings;
+    return scene.dump();
+}
+
+TEST(Router, StrictSceneWithWarningsIs400WithTheirPointersAndQueuesNothing) {
+    Service s;
+    const Response r = s.post(mistake("luminaire-above-ceiling.json", {{"strict", true}}));
+    ASSERT_EQ(r.result(), http::status::bad_request) << r.body();
+    const json error = json::parse(r.body())["error"];
+    EXPECT_EQ(error["code"], "strict_warnings");
+    EXPECT_EQ(error["pointer"], "/luminaires/0/position");
+    ASSERT_EQ(error["problems"].size(), 1u) << error;
+    EXPECT_TRUE(error["message"].get<std::string>().ends_with(" [luminaire_behind_surface]"))
+        << error;
+    EXPECT_EQ(json::parse(s.get("/v1/jobs").body())["jobs"].size(), 0u);
+    // Without warnings a strict scene is accepted.
+    EXPECT_EQ(s.post(radiant::test::tiny_room(R"({"tolerance": 0.1, "strict": true})")).result(),
+              http::status::accepted);
+}
+
+TEST(Router, JobsAndResultsCarryTheWarnings) {
+    Service s;
+    const std::string warned =
+        id_of(s.post(mistake("ceiling-wound-wrong.json", {{"tolerance", 0.1}})));
+    const std::string clean = id_of(s.post(radiant::test::tiny_room()));
+    const json job = s.wait_for(warned, "done");
+    ASSERT_EQ(job["status"], "done") << job;
+    ASSERT_EQ(job["warnings"].size(), 1u) << job;
+    EXPECT_EQ(job["warnings"][0]["code"], "back_face_light");
+    EXPECT_EQ(job["warnings"][0]["pointer"], "/surfaces/5");
+    const json result = json::parse(s.get("/v1/jobs/" + warned + "/result").body());
+    EXPECT_EQ(result["warnings"], job["warnings"]);
+    EXPECT_EQ(s.wait_for(clean, "done")["warnings"], json::array());
+    // The store keeps them: a listing reads them back from it.
+    const json listed = json::parse(s.get("/v1/jobs").body())["jobs"];
+    const auto stored = std::find_if(listed.begin(), listed.end(),
+                                     [&](const json& j) { return j["id"] == warned; });
+    ASSERT_NE(stored, listed.end()) << listed;
+    EXPECT_EQ((*stored)["warnings"], job["warnings"]);
+}
+
+TEST(Router, AStrictSolveThatEndsWithAWarningFails) {
+    Service s;
+    const std::string id =
+        id_of(s.post(radiant::test::tiny_room(R"({"tolerance": 0.001, "max_seconds": 0.05,
+                                                  "strict": true})")));
+    const json job = s.wait_for(id, "failed");
+    ASSERT_EQ(job["status"], "failed") << job;
+    EXPECT_NE(job["error"].get<std::string>().find("time_limit"), std::string::npos) << job;
+    ASSERT_EQ(job["warnings"].size(), 1u) << job;
+    EXPECT_EQ(job["warnings"][0]["pointer"], "/settings/max_seconds");
 }
 
 TEST(Query, ParsesAndDecodes) {

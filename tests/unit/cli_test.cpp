@@ -27,7 +27,7 @@ std::string data(const std::string& relative) {
 }
 
 TEST(Cli, ValidateGoodFile) {
-    const std::string file = data("good/minimal.json");
+    const std::string file = std::string(RADIANT_SOURCE_DIR) + "/proto/examples/simple-room.json";
     const CliRun r = run("validate '" + file + "'");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.out, file + ": ok\n");
