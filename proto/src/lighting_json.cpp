@@ -258,8 +258,8 @@ Result lighting_solution_from_json(const nlohmann::json& doc, std::string& error
 std::variant<LightScene, std::vector<Problem>> parse_light_scene(std::string_view body) {
     std::vector<Problem> problems;
     auto parsed = parse_json_text(body);
-    if (auto* problem = std::get_if<Problem>(&parsed)) {
-        problems.push_back(std::move(*problem));
+    if (auto* refusal = std::get_if<JsonRefusal>(&parsed)) {
+        problems.push_back(std::move(refusal->problem));
         return problems;
     }
     const auto& root = std::get<nlohmann::ordered_json>(parsed);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "radiant/proto/lighting_json.h"
+#include "radiant/proto/warnings_json.h"
 
 namespace radiant::proto {
 namespace {
@@ -137,6 +138,7 @@ nlohmann::json result_to_json(const Result& result) {
                             {"average_radiosity", s.average_radiosity}});
     }
     add_lighting(result, doc);
+    doc["warnings"] = warnings_to_json(result.warnings);
     if (result.mesh) doc["mesh"] = mesh_json(*result.mesh);
     if (const auto bad = non_finite(doc, nlohmann::json::json_pointer())) {
         nlohmann::json failed_doc = document(
@@ -144,6 +146,7 @@ nlohmann::json result_to_json(const Result& result) {
         failed_doc["stats"] = nlohmann::json::object();
         failed_doc["sensors"] = nlohmann::json::array();
         failed_doc["surfaces"] = nlohmann::json::array();
+        failed_doc["warnings"] = warnings_to_json(result.warnings);
         return failed_doc;
     }
     return doc;

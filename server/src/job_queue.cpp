@@ -11,6 +11,7 @@
 
 #include "radiant/proto/result_json.h"
 #include "radiant/proto/scene_json.h"
+#include "radiant/proto/warnings_json.h"
 #include "radiant/solve.h"
 
 namespace radiant::server {
@@ -67,6 +68,12 @@ struct JobQueue::LiveJob final : SolveObserver {
         // Linking reports no progress for seconds; the status still shows the time going by.
         record.progress.elapsed_seconds =
             std::max(record.progress.elapsed_seconds, s.progress.elapsed_seconds);
+    }
+
+    void on_warnings(const std::vector<Warning>& warnings) noexcept override {
+        nlohmann::json json = proto::warnings_to_json(warnings);
+        const std::lock_guard lock(mutex);
+        record.warnings = std::move(json);
     }
 
     JobRecord copy() const {
@@ -348,6 +355,8 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     if (final_snapshot && final_snapshot->info().final) {
         mesh = StoredMesh{final_snapshot->info(), encode(final_snapshot->mesh())};
     }
+    const nlohmann::json warnings = proto::warnings_to_json(result.warnings);
+    store_.save_warnings(id, warnings);
     store_.finish(id, status, finished, progress, result.error,
                   proto::result_to_json(result).dump(), mesh);
     metrics_.count_solve(result.stats.seconds, result.stats.rays);
@@ -357,6 +366,7 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
         job->record.finished = finished;
         job->record.progress = progress;
         job->record.error = result.error;
+        job->record.warnings = warnings;
     }
     spdlog::info("job {} running -> {} ({}, {:.2f} s)", id, to_string(status),
                  to_string(result.status), result.stats.seconds);

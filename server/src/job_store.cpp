@@ -68,7 +68,7 @@ private:
 };
 
 constexpr const char* kJobColumns =
-    "id, status, scene, idempotency_key, created, started, finished, progress, error";
+    "id, status, scene, idempotency_key, created, started, finished, progress, error, warnings";
 
 JobRecord read_job(const Statement& s) {
     JobRecord job;
@@ -81,6 +81,8 @@ JobRecord read_job(const Statement& s) {
     job.finished = s.integer(6);
     job.progress = progress_from_json(nlohmann::json::parse(s.text(7), nullptr, false));
     job.error = s.text(8);
+    job.warnings = nlohmann::json::parse(s.text(9), nullptr, false);
+    if (!job.warnings.is_array()) job.warnings = nlohmann::json::array();
     return job;
 }
 
@@ -119,7 +121,9 @@ JobStore::JobStore(const std::filesystem::path& data_dir) {
         " started INTEGER NOT NULL DEFAULT 0,"
         " finished INTEGER NOT NULL DEFAULT 0,"
         " progress TEXT NOT NULL DEFAULT '{}',"
-        " error TEXT NOT NULL DEFAULT '')");
+        " error TEXT NOT NULL DEFAULT '',"
+        " warnings TEXT NOT NULL DEFAULT '[]')");
+    add_column_if_missing("jobs", "warnings", "TEXT NOT NULL DEFAULT '[]'");
     exec(
         "CREATE UNIQUE INDEX IF NOT EXISTS jobs_idempotency ON jobs(idempotency_key)"
         " WHERE idempotency_key IS NOT NULL");
@@ -141,6 +145,16 @@ JobStore::JobStore(const std::filesystem::path& data_dir) {
 }
 
 JobStore::~JobStore() { sqlite3_close(db_); }
+
+void JobStore::add_column_if_missing(const char* table, const char* column,
+                                     const char* definition) const {
+    Statement info(db_, (std::string("PRAGMA table_info(") + table + ")").c_str());
+    while (info.step()) {
+        if (info.text(1) == column) return;
+    }
+    exec(
+        (std::string("ALTER TABLE ") + table + " ADD COLUMN " + column + " " + definition).c_str());
+}
 
 void JobStore::exec(const char* sql) const {
     char* message = nullptr;
@@ -210,6 +224,13 @@ void JobStore::save_progress(const std::string& id, const JobProgress& progress)
     // A late write must not replace the final progress of a job that has just finished.
     Statement s(db_, "UPDATE jobs SET progress = ? WHERE id = ? AND status = 'running'");
     s.bind(1, progress_to_json(progress).dump()).bind(2, id);
+    s.step();
+}
+
+void JobStore::save_warnings(const std::string& id, const nlohmann::json& warnings) {
+    const std::lock_guard lock(mutex_);
+    Statement s(db_, "UPDATE jobs SET warnings = ? WHERE id = ?");
+    s.bind(1, warnings.dump()).bind(2, id);
     s.step();
 }
 

@@ -18,6 +18,11 @@ Response post_light_scene(ServiceContext& ctx, const Request& request, const std
             request, http::status::payload_too_large, "too_large",
             "the request body is larger than " + std::to_string(ctx.max_body_bytes) + " bytes");
     }
+    if (!is_json_media_type(to_std(request[http::field::content_type]))) {
+        return error_response(request, http::status::unsupported_media_type,
+                              "unsupported_media_type",
+                              "a light scene is sent with Content-Type: application/json");
+    }
     auto posted = proto::parse_light_scene(body);
     if (auto* problems = std::get_if<std::vector<Problem>>(&posted)) {
         return error_response(request, http::status::bad_request, "invalid_light_scene", "", "",

@@ -5,13 +5,16 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
+#include <boost/asio/thread_pool.hpp>
 
 #include "radiant/server/config.h"
 #include "radiant/server/handlers.h"
@@ -20,10 +23,12 @@
 #include "radiant/server/listener.h"
 #include "radiant/server/metrics.h"
 #include "radiant/server/router.h"
+#include "radiant/server/static_files.h"
 
 namespace {
 
 namespace net = boost::asio;
+namespace fs = std::filesystem;
 using namespace radiant::server;
 
 int serve(const ServerConfig& config) {
@@ -31,6 +36,15 @@ int serve(const ServerConfig& config) {
     if (!listen) {
         spdlog::error("--listen must be ADDR:PORT, not \"{}\"", config.listen);
         return 2;
+    }
+    std::string token;
+    if (!config.token_file.empty()) {
+        try {
+            token = read_token_file(config.token_file);
+        } catch (const std::exception& e) {
+            spdlog::error("--token-file: {}", e.what());
+            return 2;
+        }
     }
     JobStore store(config.data_dir);
     Metrics metrics;
@@ -40,9 +54,23 @@ int serve(const ServerConfig& config) {
     queue_options.job_seconds = config.job_seconds;
     JobQueue jobs(store, metrics, queue_options);
     ServiceContext ctx{jobs, store, metrics, config.max_body_bytes};
-    Router router(ctx);
+    ctx.access.allowed_hosts = config.allowed_hosts;
+    ctx.access.cors_origins = config.cors_origins;
+    ctx.access.token = token;
+    ctx.listen_host = listen->host;
+    StaticFiles web(config.web_root.empty() ? default_web_root(fs::read_symlink("/proc/self/exe"))
+                                            : fs::path(config.web_root));
+    if (web.installed()) {
+        spdlog::info("web viewer from {}", web.root().string());
+    } else {
+        spdlog::warn("no web viewer in {} (no index.html): GET / answers 404", web.root().string());
+    }
+    Router router(ctx, std::move(web));
 
     net::io_context ioc(static_cast<int>(config.io_threads));
+    // After the io_context, so that it is joined and destroyed first: its tasks hold sessions.
+    net::thread_pool scene_pool(config.scene_threads);
+    ctx.scene_pool = &scene_pool;
     SessionLimits limits;
     limits.body_bytes = config.max_body_bytes;
     const net::ip::tcp::endpoint endpoint(net::ip::make_address(listen->host), listen->port);
@@ -52,8 +80,9 @@ int serve(const ServerConfig& config) {
     std::printf("listening on %s:%u\n", bound.address().to_string().c_str(),
                 static_cast<unsigned>(bound.port()));
     std::fflush(stdout);
-    spdlog::info("radiantd listening on {}:{}, data in {}, {} worker(s)",
-                 bound.address().to_string(), bound.port(), config.data_dir, config.workers);
+    spdlog::info("radiantd listening on {}:{}, data in {}, {} worker(s){}",
+                 bound.address().to_string(), bound.port(), config.data_dir, config.workers,
+                 ctx.access.token.empty() ? "" : ", bearer token required");
     listener->run();
 
     net::signal_set signals(ioc, SIGINT, SIGTERM);
@@ -70,6 +99,8 @@ int serve(const ServerConfig& config) {
     for (std::size_t i = 1; i < config.io_threads; ++i) threads.emplace_back([&ioc] { ioc.run(); });
     ioc.run();
     for (std::thread& t : threads) t.join();
+    // Parses still queued finish; the queue is shut, so they answer 503 to nobody.
+    scene_pool.join();
     jobs.shutdown();
     spdlog::info("radiantd stopped");
     return 0;
@@ -103,6 +134,23 @@ int main(int argc, char** argv) {
     app.add_option("--job-seconds", config.job_seconds, "wall-clock cap on each solve")
         ->envname("RADIANT_JOB_SECONDS")
         ->check(CLI::PositiveNumber);
+    app.add_option("--token-file", config.token_file,
+                   "file holding a bearer token required on every route but /healthz")
+        ->envname("RADIANT_TOKEN_FILE");
+    app.add_option("--allow-host", config.allowed_hosts,
+                   "a Host name answered besides localhost and the listen address (repeatable; "
+                   "* for any)")
+        ->envname("RADIANT_ALLOW_HOST")
+        ->delimiter(',');
+    app.add_option("--cors-origin", config.cors_origins,
+                   "a browser origin allowed cross-origin access, e.g. https://app.example.com "
+                   "(repeatable)")
+        ->envname("RADIANT_CORS_ORIGIN")
+        ->delimiter(',');
+    app.add_option("--web-root", config.web_root,
+                   "the web viewer's files, served at / (default: ../share/radiant/web from the "
+                   "binary)")
+        ->envname("RADIANT_WEB_ROOT");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

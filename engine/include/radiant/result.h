@@ -9,6 +9,7 @@
 
 #include "radiant/scene.h"
 #include "radiant/vec3.h"
+#include "radiant/warnings.h"
 
 namespace radiant {
 
@@ -179,6 +180,8 @@ struct Result {
     /// Every group's contribution, when the scene names groups or light scenes.
     std::vector<GroupContribution> groups;
     std::vector<LightSceneResult> light_scenes;
+    /// What looks like a modelling mistake (docs/warnings.md); empty when nothing does.
+    std::vector<Warning> warnings;
 };
 
 const char* to_string(SolveStatus status);

@@ -65,6 +65,10 @@ struct Surface {
     std::string name;
     std::string material;
     std::variant<Polygon, MeshGeometry, BoxGeometry> geometry;
+    /// Where the surface comes from in the input document, as warnings name it (a JSON pointer
+    /// such as "/surfaces/3"; an imported model's surfaces share their document surface's).
+    /// Empty: "/surfaces/<its index>". (Initialised, so that brace initialisers may omit it.)
+    std::string pointer = {};
 };
 
 enum class Distribution { isotropic, lambertian, photometric };
@@ -161,6 +165,7 @@ struct Settings {
     std::optional<double> max_seconds;
     std::string method = "auto";
     std::optional<double> maintenance_factor;  ///< of every source that sets none; default 1
+    bool strict = false;                       ///< warnings are errors (SolveOptions::strict)
 };
 
 struct Scene {

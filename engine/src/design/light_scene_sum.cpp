@@ -120,7 +120,7 @@ std::variant<LightSceneResult, std::vector<Problem>> evaluate_light_scene(const 
     for (const auto& [name, value] : scene.dimming) {
         const auto it = std::find_if(solved.groups.begin(), solved.groups.end(),
                                      [&](const GroupContribution& g) { return g.name == name; });
-        const std::string pointer = "/dimming/" + escape_token(name);
+        const std::string pointer = "/dimming/" + escape_pointer_token(name);
         if (it == solved.groups.end()) {
             std::string known;
             for (const GroupContribution& g : solved.groups)

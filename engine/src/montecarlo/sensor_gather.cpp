@@ -42,20 +42,23 @@ SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
     if (which == Points::eyes) {
         for (const PreparedObserver& o : scene.observers) {
             points_.push_back(
-                {o.position, SensorReceiver(SensorKind::planar, o.view), true, 0, {}, {}});
+                {o.position, SensorReceiver(SensorKind::planar, o.view), true, {}, 0, {}, {}});
         }
         return;
     }
     for (const PreparedSensorSet& set : scene.sensors) {
         for (const Vec3& p : set.points)
-            points_.push_back({p, SensorReceiver(set.kind, set.normal), false, 0, {}, {}});
+            points_.push_back({p, SensorReceiver(set.kind, set.normal), false, {}, 0, {}, {}});
     }
 }
 
 std::size_t SensorGather::memory_bytes() const {
     std::size_t bytes = points_.capacity() * sizeof(Point);
-    for (const Point& p : points_)
-        bytes += p.set_direct.capacity() * sizeof(double) + p.hits.capacity() * sizeof(int);
+    for (const Point& p : points_) {
+        bytes += p.set_direct.capacity() * sizeof(double) + p.hits.capacity() * sizeof(int) +
+                 p.sources.pieces.capacity() * sizeof(std::size_t) +
+                 p.sources.clusters.capacity() * sizeof(int);
+    }
     return bytes;
 }
 
@@ -67,9 +70,10 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
     const SensorReceiver& receiver = point.receiver;
     const bool fixed = receiver.fixed();
     const Vec3 fixed_normal = receiver.normal_at(0);
-    if (point.set_direct.empty() && !point.background) {
-        point.luminaires = photometric(
-            sources_.luminaires_at(point.position, receiver, visibility_, rays), channels);
+    if (point.set_direct.empty()) {
+        point.sources =
+            sources_.sensor_sources(point.position, receiver, visibility_, !point.background, rays);
+        point.luminaires = photometric(point.sources.luminaires, channels);
     }
     for (int set = static_cast<int>(point.set_direct.size()); set < sets; ++set) {
         SampleStream rng(seed_, stream_, index, static_cast<std::uint64_t>(set));
@@ -78,8 +82,8 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
         const Vec3 set_normal = fixed ? fixed_normal : receiver.normal_at(rng.next());
         const int offset = fixed ? 0 : static_cast<int>(rng.next() * kRaysPerSet);
         double direct =
-            photometric(sources_.emitting_pieces_at(point.position, set_normal, visibility_, rng,
-                                                    kPieceSamples, rays),
+            photometric(sources_.sensor_set_light(point.sources, point.position, set_normal,
+                                                  visibility_, rng, kPieceSamples, rays),
                         channels);
         double reflected = 0;
         for (int k = 0; k < kRaysPerSet; ++k) {

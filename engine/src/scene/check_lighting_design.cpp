@@ -30,7 +30,7 @@ public:
             source(scene_.luminaires[i].design, at("/luminaires", i));
         for (const Material& m : scene_.materials) {
             if (m.emission)
-                source(m.emission->design, "/materials/" + escape_token(m.name) + "/emission");
+                source(m.emission->design, "/materials/" + escape_pointer_token(m.name) + "/emission");
         }
         if (scene_.settings.maintenance_factor)
             factor(*scene_.settings.maintenance_factor, "/settings/maintenance_factor");
@@ -182,7 +182,7 @@ private:
             if (ls.name.empty()) report(base + "/name", "a light scene needs a name");
             if (!names.insert(ls.name).second) report(base + "/name", "duplicate light scene name");
             for (const auto& [group, dimming] : ls.dimming) {
-                const std::string p = base + "/dimming/" + escape_token(group);
+                const std::string p = base + "/dimming/" + escape_pointer_token(group);
                 if (std::find(components.groups.begin(), components.groups.end(), group) ==
                     components.groups.end()) {
                     std::string known;
@@ -222,7 +222,7 @@ private:
             } else if (m != lc.material_component.end()) {
                 pointer =
                     "/materials/" +
-                    escape_token(
+                    escape_pointer_token(
                         scene_
                             .materials[static_cast<std::size_t>(m - lc.material_component.begin())]
                             .name) +

@@ -99,7 +99,7 @@ private:
 void check_materials(const Scene& scene, Checker& check) {
     std::unordered_set<std::string> seen;
     for (const Material& m : scene.materials) {
-        const std::string base = "/materials/" + escape_token(m.name);
+        const std::string base = "/materials/" + escape_pointer_token(m.name);
         if (!seen.insert(m.name).second) check.report(base, "duplicate material name");
         for (std::size_t c = 0; c < 3; ++c) {
             const double r = m.reflectance[c];

@@ -1,4 +1,4 @@
-// Building the JSON pointers that problems carry (RFC 6901).
+// RFC 6901 JSON pointers, as problems and warnings name what in the scene they are about.
 #pragma once
 
 #include <cstddef>
@@ -6,8 +6,8 @@
 
 namespace radiant {
 
-/// RFC 6901 escaping of one reference token (material and group names are user text).
-inline std::string escape_token(const std::string& token) {
+/// One reference token escaped ("~" → "~0", "/" → "~1"): names are user text.
+inline std::string escape_pointer_token(const std::string& token) {
     std::string out;
     for (const char c : token) {
         if (c == '~') {

@@ -21,6 +21,13 @@ inline std::string_view to_std(boost::beast::string_view text) {
     return {text.data(), text.size()};
 }
 
+/// `%XX` escapes decoded (malformed ones kept as they are); `+` is a space only in a query.
+std::string percent_decode(std::string_view text, bool plus_is_space);
+
+/// "application/json", with parameters ("; charset=utf-8") and in any case: what a POST body
+/// must be sent as (a web page may send text/plain across origins without asking first).
+bool is_json_media_type(std::string_view value);
+
 /// `body` as application/json with the request's HTTP version and keep-alive.
 Response json_response(const Request& request, http::status status, const nlohmann::json& body);
 Response text_response(const Request& request, http::status status, std::string body,

@@ -43,6 +43,8 @@ public:
 
     void mark_running(const std::string& id, UnixMillis started);
     void save_progress(const std::string& id, const JobProgress& progress);
+    /// The job's warnings (a JSON array), as GET /v1/jobs/{id} reports them.
+    void save_warnings(const std::string& id, const nlohmann::json& warnings);
     /// Final state, progress and (optionally) the result document (without its mesh) and the
     /// solved mesh, in one transaction.
     void finish(const std::string& id, JobStatus status, UnixMillis finished,
@@ -60,6 +62,8 @@ public:
 
 private:
     void exec(const char* sql) const;
+    /// Upgrades a store written by an older radiantd in place.
+    void add_column_if_missing(const char* table, const char* column, const char* definition) const;
     sqlite3* db_ = nullptr;
     mutable std::mutex mutex_;
 };
