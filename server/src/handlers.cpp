@@ -99,18 +99,7 @@ std::vector<Problem> strict_problems(const std::vector<Warning>& warnings) {
 
 Response submit_job(ServiceContext& ctx, const Request& request) {
     const std::string& body = request.body();
-    // Sessions refuse larger bodies before reading them; this keeps the handler honest alone.
-    if (body.size() > ctx.max_body_bytes) {
-        return error_response(
-            request, http::status::payload_too_large, "too_large",
-            "the request body is larger than " + std::to_string(ctx.max_body_bytes) + " bytes");
-    }
-    // A web page may send text/plain across origins without asking first; it cannot send JSON.
-    if (!is_json_media_type(to_std(request[http::field::content_type]))) {
-        return error_response(request, http::status::unsupported_media_type,
-                              "unsupported_media_type",
-                              "a scene is sent with Content-Type: application/json");
-    }
+    if (auto refused = refuse_json_body(request, ctx.max_body_bytes, "a scene")) return *refused;
     proto::ParseLimits limits;
     limits.max_bytes = ctx.max_body_bytes;
     // One pass: JSON syntax and budget, then the scene.

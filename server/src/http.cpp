@@ -48,6 +48,23 @@ bool is_json_media_type(std::string_view value) {
                                  "application/json");
 }
 
+std::optional<Response> refuse_json_body(const Request& request, std::size_t max_body_bytes,
+                                         const std::string& what) {
+    // Sessions refuse larger bodies before reading them; this keeps a handler honest alone.
+    if (request.body().size() > max_body_bytes) {
+        return error_response(
+            request, http::status::payload_too_large, "too_large",
+            "the request body is larger than " + std::to_string(max_body_bytes) + " bytes");
+    }
+    // A web page may send text/plain across origins without asking first; it cannot send JSON.
+    if (!is_json_media_type(to_std(request[http::field::content_type]))) {
+        return error_response(request, http::status::unsupported_media_type,
+                              "unsupported_media_type",
+                              what + " is sent with Content-Type: application/json");
+    }
+    return std::nullopt;
+}
+
 Response json_response(const Request& request, http::status status, const nlohmann::json& body) {
     // A message may quote request bytes (a path, a job id) that are not UTF-8: replace them
     // rather than throw, so the answer stays the 4xx it should be.

@@ -12,18 +12,9 @@
 namespace radiant::server::handlers {
 
 Response post_light_scene(ServiceContext& ctx, const Request& request, const std::string& id) {
-    const std::string& body = request.body();
-    if (body.size() > ctx.max_body_bytes) {
-        return error_response(
-            request, http::status::payload_too_large, "too_large",
-            "the request body is larger than " + std::to_string(ctx.max_body_bytes) + " bytes");
-    }
-    if (!is_json_media_type(to_std(request[http::field::content_type]))) {
-        return error_response(request, http::status::unsupported_media_type,
-                              "unsupported_media_type",
-                              "a light scene is sent with Content-Type: application/json");
-    }
-    auto posted = proto::parse_light_scene(body);
+    if (auto refused = refuse_json_body(request, ctx.max_body_bytes, "a light scene"))
+        return *refused;
+    auto posted = proto::parse_light_scene(request.body());
     if (auto* problems = std::get_if<std::vector<Problem>>(&posted)) {
         return error_response(request, http::status::bad_request, "invalid_light_scene", "", "",
                               *problems);

@@ -97,6 +97,11 @@ TEST(LightScenesService, EvaluatesTenThousandPointsFromTheStoredSolveInUnderFift
     EXPECT_EQ(json::parse(bright.body)["error"]["pointer"], "/dimming/down");
     const auto wrong = http_call(d.port(), verb::post, job + "/scenes", R"({"dimming": 3})");
     EXPECT_EQ(wrong.status, 400u);
+    // Sent as anything but JSON: refused like a scene (a web page could send it unasked).
+    const auto plain =
+        http_call(d.port(), verb::post, job + "/scenes", R"({"name": "x", "dimming": {"down": 1}})",
+                  {{"Content-Type", "text/plain"}});
+    EXPECT_EQ(plain.status, 415u);
     // GET is not the way to ask.
     EXPECT_EQ(http_call(d.port(), verb::get, job + "/scenes").status, 405u);
     fs::remove_all(dir);

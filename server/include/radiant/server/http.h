@@ -1,6 +1,8 @@
 // HTTP message types shared by the router, handlers and sessions, and the JSON error shape.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +29,11 @@ std::string percent_decode(std::string_view text, bool plus_is_space);
 /// "application/json", with parameters ("; charset=utf-8") and in any case: what a POST body
 /// must be sent as (a web page may send text/plain across origins without asking first).
 bool is_json_media_type(std::string_view value);
+
+/// The refusal of a JSON body (`what`: "a scene") too large for `max_body_bytes` (413) or not
+/// sent as application/json (415); none when it may be read.
+std::optional<Response> refuse_json_body(const Request& request, std::size_t max_body_bytes,
+                                         const std::string& what);
 
 /// `body` as application/json with the request's HTTP version and keep-alive.
 Response json_response(const Request& request, http::status status, const nlohmann::json& body);
