@@ -15,8 +15,13 @@ struct ServerConfig {
     std::size_t queue_limit = 64;  ///< waiting jobs; bounded so memory and latency stay bounded
     /// Largest request body; the scene parser's own limit, so nothing bigger is ever buffered.
     std::size_t max_body_bytes = 64u << 20;
-    std::optional<double> job_seconds;  ///< per-job solve time cap (none: the scene's own)
-    std::size_t io_threads = 2;         ///< handlers are short; solves run on the workers
+    /// Per-job solve time cap on top of the scene's own: one job cannot hold a worker for good.
+    double job_seconds = 3600;
+    /// Per-job memory budget in MiB; 0: half the physical memory divided among the workers.
+    double job_memory_mb = 0;
+    /// The job store's size cap in MiB; 0: the disk's.
+    double max_store_mb = 0;
+    std::size_t io_threads = 2;  ///< handlers are short; solves run on the workers
 };
 
 struct ListenAddress {
