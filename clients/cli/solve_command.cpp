@@ -22,7 +22,7 @@ struct SolveArgs {
 };
 
 int run_solve(const SolveArgs& args) {
-    const std::optional<Scene> scene = load_checked_scene(args.scene);
+    const std::optional<Scene> scene = load_checked_scene(args.scene, args.flags);
     if (!scene) return kExitBadInput;
     Result result = solve_locally(*scene, args.flags, args.mesh || !args.gltf.empty());
     if (!args.gltf.empty() && result.status != SolveStatus::failed) {
