@@ -10,7 +10,9 @@
 #include <iostream>
 #include <mutex>
 
+#include "exit_codes.h"
 #include "radiant/proto/scene_json.h"
+#include "radiant/proto/warnings_json.h"
 #include "radiant/solve.h"
 
 namespace radiant::cli {
@@ -98,6 +100,13 @@ private:
     std::mutex mutex_;
 };
 
+/// Prints why the solve failed, if it did; true then.
+bool report_failed_solve(const Result& result) {
+    if (result.status != SolveStatus::failed) return false;
+    std::cerr << "radiant: solve failed: " << result.error << '\n';
+    return true;
+}
+
 }  // namespace
 
 void add_solve_flags(CLI::App& command, SolveFlags& flags) {
@@ -120,6 +129,9 @@ void add_solve_flags(CLI::App& command, SolveFlags& flags) {
                     "memory budget of the whole process: reading the scene and solving it "
                     "(default: half the physical memory for the solve)")
         ->check(CLI::PositiveNumber);
+    command.add_flag("--strict", flags.strict,
+                     "warnings are errors: exit 2 and write nothing when the scene or the solve "
+                     "has any");
     command.add_flag("--progress", flags.progress,
                      "print every progressive snapshot (error, rays, elements, links, sensor "
                      "averages) as a line on stderr");
@@ -163,6 +175,7 @@ Result solve_locally(const Scene& scene, const SolveFlags& flags, bool want_mesh
             std::max<std::size_t>(1, limit - std::min(limit, process_base_bytes()));
     }
     options.want_mesh = want_mesh;
+    options.strict = options.strict || flags.strict;
     if (flags.progress) {
         SnapshotLines lines;
         return solve(scene, options, &lines);
@@ -172,10 +185,18 @@ Result solve_locally(const Scene& scene, const SolveFlags& flags, bool want_mesh
     return solve(scene, options, progress ? &*progress : nullptr);
 }
 
-bool report_failed_solve(const Result& result) {
-    if (result.status != SolveStatus::failed) return false;
-    std::cerr << "radiant: solve failed: " << result.error << '\n';
-    return true;
+bool report_warnings(const std::string& scene_file, const std::vector<Warning>& warnings,
+                     bool strict) {
+    for (const Warning& w : warnings) std::cerr << proto::format_warning(scene_file, w) << '\n';
+    return strict && !warnings.empty();
+}
+
+std::optional<int> report_solve(const std::string& scene_file, const Scene& scene,
+                                const SolveFlags& flags, const Result& result) {
+    if (report_warnings(scene_file, result.warnings, flags.strict || scene.settings.strict))
+        return kExitBadInput;
+    if (report_failed_solve(result)) return kExitFailure;
+    return std::nullopt;
 }
 
 }  // namespace radiant::cli

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -22,10 +23,11 @@ struct SolveFlags {
     std::optional<std::string> method;
     std::optional<double> max_memory_mb;
     bool progress = false;  ///< print every snapshot as a line on stderr
+    bool strict = false;    ///< warnings are errors (exit 2), as the scene's settings.strict
 };
 
-/// Registers --tolerance, --max-seconds, --threads, --seed, --method, --max-memory-mb and
-/// --progress on a subcommand.
+/// Registers --tolerance, --max-seconds, --threads, --seed, --method, --max-memory-mb,
+/// --progress and --strict on a subcommand.
 void add_solve_flags(CLI::App& command, SolveFlags& flags);
 
 /// Loads and checks `scene_file`; on problems prints them (`FILE: /pointer: message`) and gives
@@ -36,7 +38,15 @@ std::optional<Scene> load_checked_scene(const std::string& scene_file, const Sol
 /// Solves `scene` in-process with `flags` over its settings; a progress line on a terminal.
 Result solve_locally(const Scene& scene, const SolveFlags& flags, bool want_mesh);
 
-/// Prints why the solve failed, if it did; true then.
-bool report_failed_solve(const Result& result);
+/// Prints each warning on stderr (`FILE: /pointer: message [code]`); true when `strict` makes
+/// them errors: the command then writes nothing and exits 2.
+bool report_warnings(const std::string& scene_file, const std::vector<Warning>& warnings,
+                     bool strict);
+
+/// Prints the result's warnings (report_warnings) and, unless they made it a strict refusal,
+/// why the solve failed, if it did. Returns the exit code the command ends with when the solve
+/// did not succeed, else nothing.
+std::optional<int> report_solve(const std::string& scene_file, const Scene& scene,
+                                const SolveFlags& flags, const Result& result);
 
 }  // namespace radiant::cli

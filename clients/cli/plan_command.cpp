@@ -38,7 +38,7 @@ int run_plan(const PlanArgs& args) {
         return kExitBadInput;
     }
     const Result result = solve_locally(*scene, args.flags, false);
-    if (report_failed_solve(result)) return kExitFailure;
+    if (const auto code = report_solve(args.scene, *scene, args.flags, result)) return *code;
     const auto index = static_cast<std::size_t>(set - sets.begin());
     SensorPlan plan;
     plan.title = result.scene + " - " + set->name;

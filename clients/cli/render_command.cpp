@@ -61,7 +61,7 @@ int run_render(const RenderArgs& args) {
         }
     }
     const Result result = solve_locally(*scene, args.flags, true);
-    if (report_failed_solve(result)) return kExitFailure;
+    if (const auto code = report_solve(args.scene, *scene, args.flags, result)) return *code;
     if (!result.mesh) {
         std::cerr << "radiant: the solve returned no mesh to render\n";
         return kExitFailure;

@@ -2,8 +2,11 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -12,15 +15,33 @@
 
 namespace radiant::cli {
 
-void add_server_option(CLI::App* cmd, const std::shared_ptr<std::string>& url) {
-    *url = default_server_url();
-    cmd->add_option("--server", *url,
-                    "radiantd base URL (default $RADIANT_SERVER or " + *url + ")");
+void add_server_options(CLI::App* cmd, const std::shared_ptr<ServerOptions>& options) {
+    options->url = default_server_url();
+    cmd->add_option("--server", options->url,
+                    "radiantd base URL (default $RADIANT_SERVER or " + options->url + ")");
+    cmd->add_option("--token-file", options->token_file,
+                    "file holding the service's bearer token (default $RADIANT_TOKEN_FILE; the "
+                    "token itself may be in $RADIANT_TOKEN)")
+        ->envname("RADIANT_TOKEN_FILE");
 }
 
-ServerUrl server_of(const std::string& url) {
-    const auto server = parse_server_url(url);
-    if (!server) throw CLI::ValidationError("--server", "expected http://HOST[:PORT], got " + url);
+ServerUrl server_of(const ServerOptions& options) {
+    auto server = parse_server_url(options.url);
+    if (!server) {
+        throw CLI::ValidationError("--server", "expected http://HOST[:PORT], got " + options.url);
+    }
+    if (!options.token_file.empty()) {
+        std::ifstream in(options.token_file);
+        if (!in || !std::getline(in, server->token)) {
+            throw CLI::ValidationError("--token-file", "cannot read " + options.token_file);
+        }
+        // The first line, as radiantd reads it; a trailing newline or CR is no part of it.
+        while (!server->token.empty() &&
+               std::isspace(static_cast<unsigned char>(server->token.back())))
+            server->token.pop_back();
+    } else if (const char* token = std::getenv("RADIANT_TOKEN")) {
+        server->token = token;
+    }
     return *server;
 }
 

@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 
+#include "radiant/proto/warnings_json.h"
+
 namespace radiant::proto {
 namespace {
 
@@ -135,6 +137,7 @@ nlohmann::json result_to_json(const Result& result) {
                             {"average_irradiance", s.average_irradiance},
                             {"average_radiosity", s.average_radiosity}});
     }
+    doc["warnings"] = warnings_to_json(result.warnings);
     if (result.mesh) doc["mesh"] = mesh_json(*result.mesh);
     if (const auto bad = non_finite(doc, nlohmann::json::json_pointer())) {
         nlohmann::json failed_doc = document(
@@ -142,6 +145,7 @@ nlohmann::json result_to_json(const Result& result) {
         failed_doc["stats"] = nlohmann::json::object();
         failed_doc["sensors"] = nlohmann::json::array();
         failed_doc["surfaces"] = nlohmann::json::array();
+        failed_doc["warnings"] = warnings_to_json(result.warnings);
         return failed_doc;
     }
     return doc;

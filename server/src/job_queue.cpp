@@ -11,6 +11,7 @@
 
 #include "radiant/proto/result_json.h"
 #include "radiant/proto/scene_json.h"
+#include "radiant/proto/warnings_json.h"
 #include "radiant/solve.h"
 
 namespace radiant::server {
@@ -67,6 +68,12 @@ struct JobQueue::LiveJob final : SolveObserver {
         // Linking reports no progress for seconds; the status still shows the time going by.
         record.progress.elapsed_seconds =
             std::max(record.progress.elapsed_seconds, s.progress.elapsed_seconds);
+    }
+
+    void on_warnings(const std::vector<Warning>& warnings) noexcept override {
+        nlohmann::json json = proto::warnings_to_json(warnings);
+        const std::lock_guard lock(mutex);
+        record.warnings = std::move(json);
     }
 
     JobRecord copy() const {
@@ -394,6 +401,7 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     if (final_snapshot && final_snapshot->info().final) {
         mesh = StoredMesh{final_snapshot->info(), encode(final_snapshot->mesh())};
     }
+    finished_job.warnings = proto::warnings_to_json(result.warnings);
     store_outcome(*job, finished_job, proto::result_to_json(result).dump(), mesh);
     metrics_.count_solve(result.stats.seconds, result.stats.rays);
     spdlog::info("job {} running -> {} ({}, {:.2f} s)", id, to_string(job->copy().status),
@@ -404,6 +412,7 @@ void JobQueue::store_outcome(LiveJob& job, const JobRecord& outcome, const std::
                              const std::optional<StoredMesh>& mesh) {
     JobRecord stored = outcome;
     try {
+        store_.save_warnings(outcome.id, outcome.warnings);
         store_.finish(outcome.id, outcome.status, outcome.finished, outcome.progress, outcome.error,
                       result_json, mesh);
     } catch (const StoreError& e) {
@@ -425,6 +434,7 @@ void JobQueue::store_outcome(LiveJob& job, const JobRecord& outcome, const std::
     job.record.finished = stored.finished;
     job.record.progress = stored.progress;
     job.record.error = stored.error;
+    job.record.warnings = stored.warnings;
 }
 
 void JobQueue::fail_unstored(LiveJob& job, const std::string& why) {

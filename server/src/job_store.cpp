@@ -156,7 +156,7 @@ private:
 };
 
 constexpr const char* kJobColumns =
-    "id, status, scene, idempotency_key, created, started, finished, progress, error";
+    "id, status, scene, idempotency_key, created, started, finished, progress, error, warnings";
 
 JobRecord read_job(const Statement& s) {
     JobRecord job;
@@ -169,6 +169,8 @@ JobRecord read_job(const Statement& s) {
     job.finished = s.integer(6);
     job.progress = progress_from_json(nlohmann::json::parse(s.text(7), nullptr, false));
     job.error = s.text(8);
+    job.warnings = nlohmann::json::parse(s.text(9), nullptr, false);
+    if (!job.warnings.is_array()) job.warnings = nlohmann::json::array();
     return job;
 }
 
@@ -234,7 +236,13 @@ void JobStore::initialise(const JobStoreOptions& options) {
         " started INTEGER NOT NULL DEFAULT 0,"
         " finished INTEGER NOT NULL DEFAULT 0,"
         " progress TEXT NOT NULL DEFAULT '{}',"
-        " error TEXT NOT NULL DEFAULT '')");
+        " error TEXT NOT NULL DEFAULT '',"
+        " warnings TEXT NOT NULL DEFAULT '[]')");
+    // Stores written by an older radiantd get the newer columns, with their defaults.
+    add_column_if_missing("jobs", "warnings", "TEXT NOT NULL DEFAULT '[]'");
+    // Solves started; one that never returns (its process died) stays counted.
+    add_column_if_missing("jobs", "attempts", "INTEGER NOT NULL DEFAULT 0");
+    add_column_if_missing("jobs", "cancel_requested", "INTEGER NOT NULL DEFAULT 0");
     exec(
         "CREATE UNIQUE INDEX IF NOT EXISTS jobs_idempotency ON jobs(idempotency_key)"
         " WHERE idempotency_key IS NOT NULL");
@@ -253,26 +261,21 @@ void JobStore::initialise(const JobStoreOptions& options) {
         " radiosity_event_id INTEGER NOT NULL,"
         " final INTEGER NOT NULL,"
         " mesh BLOB NOT NULL)");
-    migrate();
-}
-
-void JobStore::migrate() {
-    // Stores written before attempts and cancels were counted get the columns, zero for all.
-    bool attempts = false, cancel_requested = false;
-    Statement s(db_, "PRAGMA table_info(jobs)");
-    while (s.step()) {
-        attempts = attempts || s.text(1) == "attempts";
-        cancel_requested = cancel_requested || s.text(1) == "cancel_requested";
-    }
-    // Solves started; one that never returns (its process died) stays counted.
-    if (!attempts) exec("ALTER TABLE jobs ADD COLUMN attempts INTEGER NOT NULL DEFAULT 0");
-    if (!cancel_requested)
-        exec("ALTER TABLE jobs ADD COLUMN cancel_requested INTEGER NOT NULL DEFAULT 0");
 }
 
 JobStore::~JobStore() {
     sqlite3_close(db_);
     ::close(lock_fd_);  // releases the directory
+}
+
+void JobStore::add_column_if_missing(const char* table, const char* column,
+                                     const char* definition) const {
+    Statement info(db_, (std::string("PRAGMA table_info(") + table + ")").c_str());
+    while (info.step()) {
+        if (info.text(1) == column) return;
+    }
+    exec(
+        (std::string("ALTER TABLE ") + table + " ADD COLUMN " + column + " " + definition).c_str());
 }
 
 void JobStore::exec(const char* sql) const {
@@ -431,6 +434,17 @@ void JobStore::save_progress(const std::string& id, const JobProgress& progress)
             // A late write must not replace the final progress of a job that has just finished.
             Statement s(db_, "UPDATE jobs SET progress = ? WHERE id = ? AND status = 'running'");
             s.bind(1, progress_to_json(progress).dump()).bind(2, id);
+            s.step();
+        },
+        false);
+}
+
+void JobStore::save_warnings(const std::string& id, const nlohmann::json& warnings) {
+    const std::lock_guard lock(mutex_);
+    write(
+        [&] {
+            Statement s(db_, "UPDATE jobs SET warnings = ? WHERE id = ?");
+            s.bind(1, warnings.dump()).bind(2, id);
             s.step();
         },
         false);

@@ -109,6 +109,7 @@ struct Reply {
 };
 
 /// One request on a fresh connection; reads the whole answer (event streams until they close).
+/// A body goes as application/json unless `headers` name another Content-Type.
 inline Reply http_call(unsigned short port, boost::beast::http::verb method,
                        const std::string& target, const std::string& body = "",
                        const std::map<std::string, std::string>& headers = {}) {
@@ -119,6 +120,8 @@ inline Reply http_call(unsigned short port, boost::beast::http::verb method,
     socket.connect({boost::asio::ip::make_address("127.0.0.1"), port});
     http::request<http::string_body> request{method, target, 11};
     request.set(http::field::host, "127.0.0.1");
+    // As every client sends a scene; a test of other types says so in `headers`.
+    if (!body.empty()) request.set(http::field::content_type, "application/json");
     for (const auto& [name, value] : headers) request.set(name, value);
     request.body() = body;
     request.prepare_payload();

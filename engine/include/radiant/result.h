@@ -9,6 +9,7 @@
 
 #include "radiant/scene.h"
 #include "radiant/vec3.h"
+#include "radiant/warnings.h"
 
 namespace radiant {
 
@@ -91,6 +92,8 @@ struct Result {
     std::vector<SensorResult> sensors;
     std::vector<SurfaceResult> surfaces;
     std::optional<SolvedMesh> mesh;
+    /// What looks like a modelling mistake (docs/warnings.md); empty when nothing does.
+    std::vector<Warning> warnings;
 };
 
 const char* to_string(SolveStatus status);

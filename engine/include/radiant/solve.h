@@ -27,6 +27,10 @@ struct SolveOptions {
     /// would not fit (the result is then `stopped`, with `stop_reason`), and a solve whose first
     /// steps do not fit fails at once. 0: half the machine's physical memory.
     std::size_t max_memory_bytes = 0;
+    /// Warnings are errors: a scene with modelling warnings is refused before it is solved, and
+    /// a solve that ends with a warning (the time limit) fails; either result is `failed`, with
+    /// the warnings in Result::warnings.
+    bool strict = false;
 };
 
 /// The machine's physical memory in bytes (0 if unknown).
@@ -83,6 +87,9 @@ public:
     /// first patch mesh on also at least every 1.5 intervals, in every phase (phases without new
     /// values repeat the latest ones). May be called from a thread of the engine's own.
     virtual void on_snapshot(const Snapshot& /*snapshot*/) {}
+    /// The modelling checks' warnings, once, before solving starts, when there are any (the
+    /// result repeats them, with any the solve adds). From the solving thread.
+    virtual void on_warnings(const std::vector<Warning>& /*warnings*/) {}
 };
 
 /// Solves `scene`. Never throws for bad input: a scene that fails `check_scene` gives a result

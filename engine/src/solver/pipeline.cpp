@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include "checks/modelling_checks.h"
 #include "formfactor/enclosure.h"
 #include "formfactor/transport.h"
 #include "meshing/patch_mesh.h"
@@ -340,9 +341,26 @@ Result Pipeline::run() {
     if (method == "auto" && prefers_hierarchy(dense_mesh_size(prepared, options_.tolerance)))
         method = "hierarchical";
     record_stage("prepare", prepare_start, 0, 0);
+    // Stage: checks — what looks like a modelling mistake, on the ray tracer just built and
+    // before any solving work, so that a strict solve refuses at once.
+    const Clock::time_point checks_start = Clock::now();
+    std::uint64_t check_rays = 0;
+    std::vector<Warning> warnings =
+        modelling_warnings({scene_, prepared.scene, *prepared.visibility, triangles,
+                            prepared.triangle_piece, options_.seed},
+                           check_rays);
+    rays_ += check_rays;
+    record_stage("checks", checks_start, check_rays, 0);
+    if (observer_ && !warnings.empty()) observer_->on_warnings(warnings);
+    if (options_.strict && !warnings.empty()) {
+        result.error = "strict: the scene has warnings: " + describe_warnings(warnings);
+        result.warnings = std::move(warnings);
+        return result;
+    }
     if (method == "monte-carlo") {
         Result solved = run_monte_carlo(prepared);
         if (solved.status != SolveStatus::failed) finish(solved);
+        solved.warnings = std::move(warnings);
         return solved;
     }
     const Clock::time_point solve_start = Clock::now();
@@ -358,6 +376,7 @@ Result Pipeline::run() {
         record_stage("checking", check_start, rays_ - rays_before, 0);
     }
     finish(solved);
+    solved.warnings = std::move(warnings);
     return solved;
 }
 

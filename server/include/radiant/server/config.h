@@ -3,8 +3,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace radiant::server {
 
@@ -22,12 +24,28 @@ struct ServerConfig {
     /// The job store's size cap in MiB; 0: the disk's.
     double max_store_mb = 0;
     std::size_t io_threads = 2;  ///< handlers are short; solves run on the workers
+    /// Parses submitted scenes; one, so that parsing never takes both cores from the I/O
+    /// threads and the parser's memory is that of one body at a time.
+    std::size_t scene_threads = 1;
+    std::string token_file;  ///< a bearer token required on every route but /healthz
+    std::vector<std::string> allowed_hosts;  ///< Host names answered besides the loopback ones
+    std::vector<std::string> cors_origins;   ///< browser origins allowed cross-origin access
+    std::string web_root;                    ///< the viewer's files (empty: default_web_root())
 };
+
+/// The token in `path`: its first line, without surrounding white space. Throws when the file
+/// cannot be read or holds no token.
+std::string read_token_file(const std::string& path);
 
 struct ListenAddress {
     std::string host;
     std::uint16_t port = 0;
 };
+
+/// Where an installed radiantd finds the web viewer: PREFIX/share/radiant/web for
+/// PREFIX/bin/radiantd. The build tree has the same layout (build/bin, build/share), so a built
+/// daemon finds the viewer the build made.
+std::filesystem::path default_web_root(const std::filesystem::path& executable);
 
 /// "127.0.0.1:8080" or "[::1]:8080"; nothing for anything else.
 std::optional<ListenAddress> parse_listen(const std::string& text);

@@ -85,6 +85,8 @@ public:
     /// the solve stops leaves the job cancelled, not queued again. No-op for finished jobs.
     void request_cancel(const std::string& id);
     void save_progress(const std::string& id, const JobProgress& progress);
+    /// The job's warnings (a JSON array), as GET /v1/jobs/{id} reports them.
+    void save_warnings(const std::string& id, const nlohmann::json& warnings);
     /// Final state, progress and (optionally) the result document (without its mesh) and the
     /// solved mesh, in one transaction.
     void finish(const std::string& id, JobStatus status, UnixMillis finished,
@@ -117,12 +119,13 @@ private:
     /// a failure marks it unwritable, a success that `adds_rows` writable again.
     template <typename Write>
     void write(Write&& write, bool adds_rows);
-    void migrate();
     void finish_locked(const std::string& id, JobStatus status, UnixMillis finished,
                        const JobProgress& progress, const std::string& error,
                        const std::optional<std::string>& result_json,
                        const std::optional<StoredMesh>& mesh);
     const std::filesystem::path data_dir_;
+    /// Upgrades a store written by an older radiantd in place.
+    void add_column_if_missing(const char* table, const char* column, const char* definition) const;
     sqlite3* db_ = nullptr;
     int lock_fd_ = -1;
     mutable std::mutex mutex_;

@@ -41,6 +41,7 @@ private:
     void do_read();
     void on_header(boost::beast::error_code ec);
     void on_read(boost::beast::error_code ec);
+    void deliver(RouteResult routed);
     void refuse(http::status status, const std::string& code, const std::string& message);
     void send(Response response);
     void on_write(bool close, boost::beast::error_code ec);
