@@ -312,6 +312,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
                  channels, stopped);
+    // What the links lost or carried unevenly, apart from the iteration's residual.
+    result.stats.error_parts.residual = outcome.error_estimate;
+    if (error_estimate > outcome.error_estimate)
+        result.stats.error_parts.completion = error_estimate;
     final_mesh_ = mesh;
     final_mesh_version_ = kLeafMeshVersion;
     return result;

@@ -68,6 +68,9 @@ constexpr double kUnresolvedShare = 0.05;
 // matrix: the patch mesh (PatchGeometry and OpenMesh faces), the linear system's arrays, the
 // solved patches and the display meshes of two snapshots.
 constexpr std::size_t kDensePatchBytes = 3072;
+// What a discretisation check that could not coarsen the mesh (the tolerance already gives the
+// scene's coarsest) claims, in tolerances: more than one, so that a finer solve measures it.
+constexpr double kUncheckedShare = 2;
 // Mesh versions of refined solutions: above those of either path (dense 1, hierarchical 1–3),
 // so a viewer sees the triangles change.
 constexpr std::uint64_t kFirstRefinedMeshVersion = 4;
@@ -79,6 +82,16 @@ constexpr std::uint64_t kFirstRefinedMeshVersion = 4;
 // smooth.
 double richardson_estimate(const Result& fine, const Result& coarse, double ratio) {
     return kCheckMargin * largest_relative_difference(fine, coarse) / (ratio - 1);
+}
+
+// How much finer `fine`'s discretisation is than `coarse`'s, in the units its error goes with:
+// the tolerance for the hierarchical solver, patches for a dense mesh (error ∝ h² ∝ 1/patches),
+// which stops growing with the tolerance at the scene's coarsest mesh.
+double mesh_ratio(const std::string& method, double tolerance_ratio, const Result& fine,
+                  const Result& coarse) {
+    if (method == "hierarchical") return tolerance_ratio;
+    return static_cast<double>(fine.stats.patches) /
+           static_cast<double>(std::max<std::size_t>(coarse.stats.patches, 1));
 }
 
 }  // namespace
@@ -148,7 +161,15 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
         rays_ += check.rays_;
         if (!check.memory_stop_.empty()) stop_for_memory(check.memory_stop_);
         finished = c.status == SolveStatus::converged;
-        if (finished) estimate = std::max(estimate, richardson_estimate(result, c, ratio));
+        if (finished) {
+            const double measured = mesh_ratio(method, ratio, result, c);
+            // The same mesh twice shows no error at all, whatever this mesh's is.
+            const double discretisation = measured >= kMinCheckRatio
+                                              ? richardson_estimate(result, c, measured)
+                                              : kUncheckedShare * options_.tolerance;
+            result.stats.error_parts.discretisation = discretisation;
+            estimate = std::max(estimate, discretisation);
+        }
     }
     result.stats.error_estimate = estimate;
     result.stats.rays = rays_;
@@ -178,7 +199,7 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
         // The dense path's mesh cannot outgrow its patch budget: `auto` goes on with the
         // hierarchical solver, the others with the finest mesh that fits, once.
         bool switched = false;
-        double mesh_ratio = ratio;
+        double refine_ratio = ratio;
         if (method != "hierarchical") {
             const DenseMeshSize size = dense_mesh_size(prepared, finer.tolerance);
             if (!size.fits && options_.method == "auto") {
@@ -186,9 +207,9 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
                 switched = true;
             } else if (!size.fits) {
                 // Errors go as h², i.e. as 1 / patches.
-                mesh_ratio = static_cast<double>(size.patches) /
-                             static_cast<double>(std::max<std::size_t>(result.stats.patches, 1));
-                if (!(mesh_ratio >= kMinCheckRatio)) break;
+                refine_ratio = static_cast<double>(size.patches) /
+                               static_cast<double>(std::max<std::size_t>(result.stats.patches, 1));
+                if (!(refine_ratio >= kMinCheckRatio)) break;
             }
         }
         report("refining", 0.95, result.stats.iterations, result.stats.error_estimate,
@@ -209,8 +230,13 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
             refined.check_discretisation(prepared, method, f);
             finished = f.status == SolveStatus::converged;
         } else if (finished) {
-            f.stats.error_estimate =
-                std::max(f.stats.error_estimate, richardson_estimate(f, result, mesh_ratio));
+            const double measured = mesh_ratio(method, refine_ratio, f, result);
+            finished = measured >= kMinCheckRatio;
+            if (finished) {
+                f.stats.error_parts.discretisation = richardson_estimate(f, result, measured);
+                f.stats.error_estimate =
+                    std::max(f.stats.error_estimate, f.stats.error_parts.discretisation);
+            }
         }
         rays_ += refined.rays_;
         if (!finished) {
@@ -278,6 +304,7 @@ void Pipeline::finish_stats(Result& result, const std::string& method, std::size
     st.rays = rays_;
     st.unshot_fraction = unshot_fraction;
     st.error_estimate = error_estimate;
+    st.error_parts.residual = error_estimate;  // the linear system's; checks add their parts
     st.channels = channels;
     st.threads = tbb::this_task_arena::max_concurrency();
     st.seconds = elapsed();
