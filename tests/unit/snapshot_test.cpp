@@ -38,7 +38,7 @@ TEST(Snapshots, VersionedWhileSolvingAndFinalEqualsResult) {
         options.want_mesh = true;
         SnapshotRecorder recorder;
         const Result r = solve(scene, options, &recorder);
-        ASSERT_EQ(r.status, SolveStatus::converged) << method << " " << r.error;
+        ASSERT_EQ(r.status, SolveStatus::converged) << method << " " << r.error << r.stop_reason;
         ASSERT_FALSE(recorder.snapshots.empty()) << method;
         if (method == "shooting" || method == "jacobi") {
             EXPECT_GE(recorder.snapshots.size(), 2u) << method;
