@@ -31,8 +31,9 @@ struct SolveFlags {
 void add_solve_flags(CLI::App& command, SolveFlags& flags);
 
 /// Loads and checks `scene_file`; on problems prints them (`FILE: /pointer: message`) and gives
-/// nothing, so commands can check their own arguments against the scene before solving.
-std::optional<Scene> load_checked_scene(const std::string& scene_file);
+/// nothing, so commands can check their own arguments against the scene before solving. With
+/// --max-memory-mb, a file too large to read within it is refused before it is read.
+std::optional<Scene> load_checked_scene(const std::string& scene_file, const SolveFlags& flags);
 
 /// Solves `scene` in-process with `flags` over its settings; a progress line on a terminal.
 Result solve_locally(const Scene& scene, const SolveFlags& flags, bool want_mesh);

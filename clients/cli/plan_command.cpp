@@ -24,7 +24,7 @@ struct PlanArgs {
 };
 
 int run_plan(const PlanArgs& args) {
-    const std::optional<Scene> scene = load_checked_scene(args.scene);
+    const std::optional<Scene> scene = load_checked_scene(args.scene, args.flags);
     if (!scene) return kExitBadInput;
     // The set is looked up before solving, so a wrong name costs no solve.
     const std::vector<SensorSet>& sets = scene->sensors;

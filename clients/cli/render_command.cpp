@@ -51,7 +51,7 @@ Camera camera_from(const RenderArgs& args, const Scene& scene, Camera fallback) 
 }
 
 int run_render(const RenderArgs& args) {
-    const std::optional<Scene> scene = load_checked_scene(args.scene);
+    const std::optional<Scene> scene = load_checked_scene(args.scene, args.flags);
     if (!scene) return kExitBadInput;
     // A camera given in full is checked before solving, so a bad one costs no solve.
     if (args.eye && args.target) {

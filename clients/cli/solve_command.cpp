@@ -26,7 +26,7 @@ int run_solve(const SolveArgs& args) {
     for (const std::string& path : {args.out, args.gltf}) {
         if (!path.empty()) check_output_path(path);
     }
-    const std::optional<Scene> scene = load_checked_scene(args.scene);
+    const std::optional<Scene> scene = load_checked_scene(args.scene, args.flags);
     if (!scene) return kExitBadInput;
     Result result = solve_locally(*scene, args.flags, args.mesh || !args.gltf.empty());
     // A strict refusal writes nothing; a failed solve still writes its result document.

@@ -128,6 +128,8 @@ nlohmann::json result_to_json(const Result& result) {
     const bool failed = result.status == SolveStatus::failed;
     nlohmann::json doc = document(result, to_string(result.status),
                                   failed && result.error.empty() ? "unknown error" : result.error);
+    if (result.status == SolveStatus::stopped && !result.stop_reason.empty())
+        doc["stop_reason"] = result.stop_reason;
     doc["stats"] = stats_json(result.stats);
     doc["sensors"] = sensors_to_json(result.sensors);
     nlohmann::json& surfaces = doc["surfaces"] = nlohmann::json::array();

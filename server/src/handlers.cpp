@@ -143,6 +143,13 @@ Response submit_job(ServiceContext& ctx, const Request& request) {
             response.set(http::field::retry_after, kRetryAfterSeconds);
             return response;
         }
+        case SubmitOutcome::Kind::store_unwritable: {
+            Response response =
+                error_response(request, http::status::service_unavailable, "store_unwritable",
+                               "the job store cannot take the job: " + submitted.reason);
+            response.set(http::field::retry_after, kRetryAfterSeconds);
+            return response;
+        }
         case SubmitOutcome::Kind::shutting_down:
             break;
     }
@@ -216,7 +223,17 @@ Response get_result_glb(ServiceContext& ctx, const Request& request, const std::
 }
 
 Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id) {
-    const auto job = ctx.jobs.cancel(id);
+    std::optional<JobRecord> job;
+    try {
+        job = ctx.jobs.cancel(id);
+    } catch (const StoreError& e) {
+        // A cancel answered 202 must survive a restart; one the store cannot keep is refused.
+        Response response =
+            error_response(request, http::status::service_unavailable, "store_unwritable",
+                           std::string("the cancel could not be stored: ") + e.what());
+        response.set(http::field::retry_after, kRetryAfterSeconds);
+        return response;
+    }
     if (!job) return unknown_job(request, id);
     // 202 while a solve is still stopping (running, or just taken from the queue by a worker);
     // 200 once the state is final.
@@ -253,9 +270,16 @@ Response list_jobs(ServiceContext& ctx, const Request& request, const Query& que
 }
 
 Response healthz(ServiceContext& ctx, const Request& request) {
-    const bool stopping = ctx.jobs.shutting_down();
-    return json_response(request, stopping ? http::status::service_unavailable : http::status::ok,
-                         {{"status", stopping ? "shutting_down" : "ok"}});
+    if (ctx.jobs.shutting_down()) {
+        return json_response(request, http::status::service_unavailable,
+                             {{"status", "shutting_down"}});
+    }
+    const StoreHealth store = ctx.store.health();
+    if (!store.writable) {
+        return json_response(request, http::status::service_unavailable,
+                             {{"status", "store_unwritable"}, {"reason", store.reason}});
+    }
+    return json_response(request, http::status::ok, {{"status", "ok"}});
 }
 
 Response metrics(ServiceContext& ctx, const Request& request) {

@@ -24,12 +24,15 @@
 #include "radiant/server/metrics.h"
 #include "radiant/server/router.h"
 #include "radiant/server/static_files.h"
+#include "radiant/solve.h"
 
 namespace {
 
 namespace net = boost::asio;
 namespace fs = std::filesystem;
 using namespace radiant::server;
+
+std::size_t mebibytes(double mb) { return static_cast<std::size_t>(mb * 1024 * 1024); }
 
 int serve(const ServerConfig& config) {
     const auto listen = parse_listen(config.listen);
@@ -46,12 +49,17 @@ int serve(const ServerConfig& config) {
             return 2;
         }
     }
-    JobStore store(config.data_dir);
+    JobStoreOptions store_options;
+    store_options.max_bytes = mebibytes(config.max_store_mb);
+    JobStore store(config.data_dir, store_options);
     Metrics metrics;
     JobQueueOptions queue_options;
     queue_options.workers = config.workers;
     queue_options.queue_limit = config.queue_limit;
     queue_options.job_seconds = config.job_seconds;
+    queue_options.job_memory_bytes = config.job_memory_mb > 0
+                                         ? mebibytes(config.job_memory_mb)
+                                         : radiant::physical_memory_bytes() / (2 * config.workers);
     JobQueue jobs(store, metrics, queue_options);
     ServiceContext ctx{jobs, store, metrics, config.max_body_bytes};
     ctx.access.allowed_hosts = config.allowed_hosts;
@@ -80,9 +88,12 @@ int serve(const ServerConfig& config) {
     std::printf("listening on %s:%u\n", bound.address().to_string().c_str(),
                 static_cast<unsigned>(bound.port()));
     std::fflush(stdout);
-    spdlog::info("radiantd listening on {}:{}, data in {}, {} worker(s){}",
-                 bound.address().to_string(), bound.port(), config.data_dir, config.workers,
-                 ctx.access.token.empty() ? "" : ", bearer token required");
+    spdlog::info(
+        "radiantd listening on {}:{}, data in {}, {} worker(s), each job up to {:.0f} s "
+        "and {} MiB{}",
+        bound.address().to_string(), bound.port(), config.data_dir, config.workers,
+        config.job_seconds, queue_options.job_memory_bytes >> 20,
+        ctx.access.token.empty() ? "" : ", bearer token required");
     listener->run();
 
     net::signal_set signals(ioc, SIGINT, SIGTERM);
@@ -133,6 +144,16 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--job-seconds", config.job_seconds, "wall-clock cap on each solve")
         ->envname("RADIANT_JOB_SECONDS")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    app.add_option("--job-memory-mb", config.job_memory_mb,
+                   "memory budget of each solve in MiB (default: half the physical memory "
+                   "divided among the workers)")
+        ->envname("RADIANT_JOB_MEMORY_MB")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--max-store-mb", config.max_store_mb,
+                   "size cap of the job store in MiB (default: the disk's)")
+        ->envname("RADIANT_MAX_STORE_MB")
         ->check(CLI::PositiveNumber);
     app.add_option("--token-file", config.token_file,
                    "file holding a bearer token required on every route but /healthz")

@@ -432,6 +432,8 @@ int main(int argc, char** argv) {
                               << " points\n";
                     return std::nullopt;
                 }
+                std::cerr << "radiant-bench: reference of " << bench.scene.name << ": "
+                          << bench.reference.source << ", " << first.points.size() << " points\n";
             }
         } else if (name == kRadianceRoom) {
             const auto scene = load(data / "radiance" / "room-s2.json");

@@ -13,6 +13,7 @@
 
 #include "cli_run.h"
 #include "daemon.h"
+#include "daemon_fixture.h"
 #include "service_scenes.h"
 #include "test_files.h"
 
@@ -24,42 +25,7 @@ using nlohmann::json;
 using radiant::test::Daemon;
 using radiant::test::http_call;
 
-class DaemonTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("radiantd_test_" + std::to_string(getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        if (HasFailure()) std::cerr << radiant::test::read_text(log()) << '\n';
-        fs::remove_all(dir_);
-    }
-    fs::path data() const { return dir_ / "data"; }
-    fs::path log() const { return dir_ / "radiantd.log"; }
-
-    static std::string post(const Daemon& d, const std::string& scene) {
-        const auto r = http_call(d.port(), verb::post, "/v1/jobs", scene);
-        EXPECT_EQ(r.status, 202u) << r.body;
-        return json::parse(r.body)["id"];
-    }
-    static json wait_for(const Daemon& d, const std::string& id, const std::string& want,
-                         double seconds = 20) {
-        const auto deadline =
-            std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-        json job;
-        do {
-            job = json::parse(http_call(d.port(), verb::get, "/v1/jobs/" + id).body);
-            if (job["status"] == want) break;
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        } while (std::chrono::steady_clock::now() < deadline);
-        return job;
-    }
-
-    fs::path dir_;
-};
+class DaemonTest : public radiant::test::DaemonFixture {};
 
 TEST_F(DaemonTest, SolvesRefusesAndStreams) {
     Daemon d(data(), {"--max-body-bytes", "100000", "--queue-limit", "1"}, log());

@@ -171,6 +171,9 @@ struct Result {
     std::string scene;
     SolveStatus status = SolveStatus::failed;
     std::string error;  ///< set when status == failed
+    /// Set when status == stopped: what ended the solve before its estimate met the tolerance
+    /// (the time limit, a cancel, the memory budget, or the finest mesh within the limits).
+    std::string stop_reason;
     SolveStats stats;
     std::vector<SensorResult> sensors;
     std::vector<SurfaceResult> surfaces;

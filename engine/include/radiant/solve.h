@@ -22,8 +22,10 @@ struct SolveOptions {
     bool want_mesh = false;             ///< fill Result::mesh
     /// Least time between two snapshots handed to SolveObserver::on_snapshot while solving.
     double snapshot_interval_seconds = 0.5;
-    /// The hierarchical solver's elements stop splitting before they and their links would
-    /// hold more (the result is then `stopped`); 0: half the machine's physical memory.
+    /// Memory budget of the solve: the scene it is given and everything the solver allocates.
+    /// Each step estimates its memory before it allocates it; refinement stops at a step that
+    /// would not fit (the result is then `stopped`, with `stop_reason`), and a solve whose first
+    /// steps do not fit fails at once. 0: half the machine's physical memory.
     std::size_t max_memory_bytes = 0;
     /// Warnings are errors: a scene with modelling warnings is refused before it is solved, and
     /// a solve that ends with a warning (the time limit) fails; either result is `failed`, with

@@ -47,10 +47,14 @@ void check_solve_outcome(const Result& result, const SolveOptions& options, bool
         }
     }
     if (result.status == SolveStatus::stopped) {
-        out.push_back({"not_converged",
-                       "the solve stopped with " + estimate +
-                           ": a memory, mesh or refinement limit came first",
-                       "/settings/tolerance"});
+        // The memory budget may stop refinement with the estimate within the tolerance.
+        out.push_back(
+            {"not_converged",
+             "the solve stopped with an error estimate of " + number(st.error_estimate) +
+                 " (tolerance " + number(options.tolerance) + "): " +
+                 (result.stop_reason.empty() ? "a memory, mesh or refinement limit came first"
+                                             : result.stop_reason),
+             "/settings/tolerance"});
     }
 }
 

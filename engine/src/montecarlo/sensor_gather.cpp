@@ -52,6 +52,8 @@ SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
     }
 }
 
+std::size_t SensorGather::bytes_per_point() { return sizeof(Point); }
+
 std::size_t SensorGather::memory_bytes() const {
     std::size_t bytes = points_.capacity() * sizeof(Point);
     for (const Point& p : points_) {
@@ -75,6 +77,9 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
             sources_.sensor_sources(point.position, receiver, visibility_, !point.background, rays);
         point.luminaires = photometric(point.sources.luminaires, channels);
     }
+    // Exactly what `sets` need: the memory budget counts them so (bytes_per_set).
+    point.set_direct.reserve(static_cast<std::size_t>(sets));
+    point.hits.reserve(static_cast<std::size_t>(sets) * kRaysPerSet);
     for (int set = static_cast<int>(point.set_direct.size()); set < sets; ++set) {
         SampleStream rng(seed_, stream_, index, static_cast<std::uint64_t>(set));
         // A kind that averages receiver normals draws the emitting surfaces' one per set, and

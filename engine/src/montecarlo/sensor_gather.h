@@ -57,6 +57,10 @@ public:
     /// points.
     std::vector<GatheredPoint> evaluate(const PhotonField& field) const;
     std::size_t memory_bytes() const;
+    /// What one more ray set costs at one point.
+    static constexpr std::size_t kBytesPerSet = sizeof(double) + kRaysPerSet * sizeof(int);
+    /// What a point holds before any set, besides its two lists' heap blocks.
+    static std::size_t bytes_per_point();
 
 private:
     struct Point {

@@ -15,6 +15,7 @@
 #include "montecarlo/sensor_gather.h"
 #include "solution/sensors.h"
 #include "solution/surface_summary.h"
+#include "solver/memory_estimates.h"
 #include "solver/pipeline.h"
 
 namespace radiant {
@@ -73,6 +74,12 @@ struct ComponentLight {
         return field.photons() >= budget.photons && gather.sets() >= budget.sets &&
                eyes.sets() >= eye_sets;
     }
+    /// Keeps this share of the budgeted ray sets (never fewer than are gathered): what fits in
+    /// memory.
+    void cut_sets(double share) {
+        budget.sets = std::max(gather.sets(), static_cast<int>(share * budget.sets));
+        eye_sets = std::max(eyes.sets(), static_cast<int>(share * eye_sets));
+    }
 };
 
 // One level of elements with everything that refers to them.
@@ -96,6 +103,57 @@ struct MonteCarloLevel {
     std::unique_ptr<Visibility> visibility;
     std::vector<std::unique_ptr<ComponentLight>> lights;
 };
+
+// The ray sets of every light component at its sensors and eyes: as this round's budgets ask
+// for them, or as gathered so far.
+enum class RaySets { budgeted, gathered };
+std::size_t sets_bytes(const MonteCarloLevel& level, RaySets which) {
+    std::size_t sets = 0;
+    for (const auto& light : level.lights) {
+        const bool budgeted = which == RaySets::budgeted;
+        sets += static_cast<std::size_t>(budgeted ? light->budget.sets : light->gather.sets()) *
+                    light->gather.points() +
+                static_cast<std::size_t>(budgeted ? light->eye_sets : light->eyes.sets()) *
+                    light->eyes.points();
+    }
+    return sets * SensorGather::kBytesPerSet;
+}
+
+// A display triangle: three vertices with their radiosity, its corners, surface and radiosity.
+constexpr std::size_t kDisplayBytesPerElement =
+    3 * (sizeof(Vec3) + sizeof(double)) + sizeof(std::array<int, 3>) + sizeof(int) + sizeof(double);
+
+// What one level of elements holds while its rounds run: the elements and their sides, the ray
+// tracer over them, each light component's photon tallies and sensor and eye points before their
+// ray sets, a wave's deposits (components trace one after another); and at its peak either the
+// ray tracer's build (with the triangle list it copies) or the display meshes and the sides'
+// summaries that snapshots and the result are made of (a snapshot is built while the one it
+// replaces is still shown; the result's mesh is a copy).
+std::size_t level_bytes(const ElementCount& count, std::size_t points, std::size_t components,
+                        double survival, int display_copies) {
+    const std::size_t build = count.elements * (sizeof(Triangle) + kEmbreeBuildBytesPerTriangle -
+                                                kEmbreeBytesPerTriangle);
+    const std::size_t display =
+        static_cast<std::size_t>(display_copies) *
+        (count.elements * kDisplayBytesPerElement + count.sides * sizeof(SolvedElement));
+    const std::size_t per_component =
+        count.sides * PhotonField::kBytesPerSide +
+        points * (SensorGather::bytes_per_point() + 2 * kHeapBlockBytes + sizeof(GatheredPoint));
+    return count.elements * (sizeof(Element) + kEmbreeBytesPerTriangle) +
+           count.sides * sizeof(ElementSide) + components * per_component +
+           PhotonField::wave_bytes(survival) + std::max(build, display);
+}
+
+// How likely a photon survives a bounce, on average over the surfaces' area.
+double mean_survival(const PreparedScene& scene) {
+    double weighted = 0, area = 0;
+    for (const Piece& p : scene.pieces) {
+        const Rgb& rho = scene.materials[static_cast<std::size_t>(p.material)].reflectance;
+        weighted += p.area_m2 * std::min(1.0, std::max({rho[0], rho[1], rho[2]}));
+        area += p.area_m2;
+    }
+    return area > 0 ? weighted / area : 0;
+}
 
 Rgb times(const Rgb& a, const Rgb& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
@@ -184,7 +242,12 @@ MonteCarloError maintained_error(const MonteCarloLevel& level) {
 SolvedMesh display_mesh(const PreparedScene& scene, const ElementMesh& mesh,
                         const std::vector<SolvedElement>& sides) {
     SolvedMesh out;
+    // Reserved exactly, as kDisplayBytesPerElement counts them.
     out.vertices.reserve(3 * mesh.size());
+    out.vertex_radiosity.reserve(3 * mesh.size());
+    out.triangles.reserve(mesh.size());
+    out.triangle_surface.reserve(mesh.size());
+    out.triangle_radiosity.reserve(mesh.size());
     for (std::size_t i = 0; i < mesh.size(); ++i) {
         const Element& e = mesh[i];
         const double b =
@@ -275,6 +338,15 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     std::size_t rounds = 0;
     bool stopped = false;
     std::uint64_t mesh_version = kFirstMeshVersion;
+    // Memory: each level is estimated from its element count before it is built; ray sets are
+    // added only as far as they fit.
+    const double survival = mean_survival(scene);
+    const int display_copies = (observer_ ? 2 : 1) + (options_.want_mesh ? 1 : 0);
+    const std::size_t components = std::max<std::size_t>(1, scene.components.components.size());
+    auto bytes_of = [&](const ElementCount& count) {
+        return level_bytes(count, sensor_points + eye_sizes.size(), components, survival,
+                           display_copies);
+    };
     double edge = kEdgeOfFreePath * input.mean_free_path_m;
     // A component is done once its own estimates meet the tolerance: every sum of components
     // with weights in [0, 1] then does too.
@@ -282,10 +354,33 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     const auto done = [tolerance](const ComponentLight& light) {
         return light.reported <= tolerance && light.eye_reported <= tolerance;
     };
+    ElementCount count = ElementMesh::count(scene, edge);
+    const std::size_t natural_bytes = bytes_of(count);
+    // Coarser elements than the light's variation asks for, if the budget needs it: the
+    // discretisation estimate then says what that costs, and the result is `stopped` if it
+    // misses the tolerance.
+    while (!memory_->fits(bytes_of(count))) {
+        const ElementCount coarser = ElementMesh::count(scene, 2 * edge);
+        if (coarser.elements >= count.elements) {
+            result.error = "memory budget: " +
+                           memory_->refusal(
+                               "monte-carlo's coarsest elements (one per triangle), their ray "
+                               "tracer, photons and sensors",
+                               bytes_of(count));
+            return result;
+        }
+        stop_for_memory(memory_->refusal(
+            "monte-carlo's elements at a quarter of the mean free path", natural_bytes));
+        edge *= 2;
+        count = coarser;
+    }
+    MemoryHold level_hold(*memory_, bytes_of(count));
+    MemoryHold sets_hold(*memory_, 0);
     for (int refinements = 0;; ++refinements, edge *= kRefinementRatio) {
         // Stage: meshing — elements, and a ray tracer over them so that a hit names its element.
         Clock::time_point stage_start = Clock::now();
         report("meshing", 0.02, rounds, reported);
+        level.reset();  // the finer level replaces it (its estimate was held in its place)
         level = std::make_unique<MonteCarloLevel>(scene, edge, options_.seed);
         elements_ = level->mesh.size();
         mesh_version = kFirstMeshVersion + static_cast<std::uint64_t>(refinements);
@@ -315,7 +410,23 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 photons.rays += photon_rays;
             }
             photons.seconds += seconds_since(stage_start);
-            // Stage: gather — the sensors' and eyes' ray sets, to this round's budget.
+            // Stage: gather — the sensors' and eyes' ray sets, to this round's budget, as far as
+            // they fit.
+            const std::size_t wanted_bytes = sets_bytes(*level, RaySets::budgeted);
+            const std::size_t room_bytes = memory_->available_bytes() + sets_hold.bytes();
+            bool sets_cut = false;
+            if (wanted_bytes > room_bytes) {
+                stop_for_memory(memory_->refusal(
+                    "ray sets at " + std::to_string(sensor_points + eye_sizes.size()) +
+                        " sensor and eye points for each of " +
+                        std::to_string(level->lights.size()) + " light components",
+                    wanted_bytes - sets_bytes(*level, RaySets::gathered)));
+                const double fitting =
+                    static_cast<double>(room_bytes) / static_cast<double>(wanted_bytes);
+                for (const auto& light : level->lights) light->cut_sets(fitting);
+                sets_cut = true;
+            }
+            sets_hold.resize(sets_bytes(*level, RaySets::budgeted));
             stage_start = Clock::now();
             report("gather", 0.5, rounds, reported);
             for (const auto& light : level->lights) {
@@ -361,6 +472,10 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                             [&](const auto& light) { return done(*light); })) {
                 break;
             }
+            if (sets_cut) {
+                stopped = true;
+                break;
+            }
             // Bias does not fall with samples: a finer mesh does.
             const double bias_target = kTargetShare * options_.tolerance;
             const bool biased =
@@ -370,6 +485,21 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 });
             if (biased) {
                 refine = refinements < kMaxRefinements;
+                if (refine) {
+                    // The finer level replaces this one, with the ray sets this one has.
+                    const ElementCount finer = ElementMesh::count(scene, edge * kRefinementRatio);
+                    const std::size_t finer_bytes =
+                        bytes_of(finer) + sets_bytes(*level, RaySets::gathered);
+                    if (!memory_->fits(
+                            finer_bytes -
+                            std::min(finer_bytes, level_hold.bytes() + sets_hold.bytes()))) {
+                        stop_for_memory(
+                            memory_->refusal("monte-carlo's finer elements", finer_bytes));
+                        refine = false;
+                    } else {
+                        level_hold.resize(bytes_of(finer));
+                    }
+                }
                 stopped = !refine;
                 break;
             }
