@@ -320,6 +320,18 @@ class Job:
             raise JobFailedError(job)
         return job
 
+    def light_scene(self, name: str, dimming: Mapping[str, float]) -> Dict[str, Any]:
+        """``POST /v1/jobs/{id}/scenes``: the light scene ``name`` with each group's ``dimming``
+        (0–1; a group it does not name is off), from the finished job's stored solution without
+        solving again. Returns ``{"name", "dimming", "error_estimate", "sensors", "observers"}``,
+        each sensor set as in the result. Raises :class:`BadRequestError` (its ``pointer``) for an
+        unknown group or a dimming outside [0, 1], :class:`HTTPError` 409 while the job runs or
+        when its scene names no groups.
+        """
+        body = json.dumps({"name": name, "dimming": dict(dimming)}).encode("utf-8")
+        return self._transport.json("POST", self.client._path(self.id, "/scenes"), body,
+                                    {"Content-Type": "application/json"})
+
     def metrics(self, result: Optional[Mapping[str, Any]] = None) -> List[workplane.SensorMetrics]:
         """Each sensor set's E_avg, E_min, E_max, U0 (of ``result``, default :meth:`result`)."""
         return workplane.sensor_metrics(self.result() if result is None else result)

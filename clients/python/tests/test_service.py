@@ -11,7 +11,7 @@ import time
 import unittest
 from pathlib import Path
 
-from radiant_client import (Client, HTTPError, InvalidSceneError, NotFoundError, QueueFullError,
+from radiant_client import (BadRequestError, Client, HTTPError, InvalidSceneError, NotFoundError, QueueFullError,
                             RadiantConnectionError, RadiantTimeout, SceneError, SceneFileError)
 from radiant_client.events import parse_events
 
@@ -98,6 +98,30 @@ class Service(unittest.TestCase):
         grid = result["sensors"][0]["grid"]
         self.assertEqual((len(rows[0]), len(rows)), (grid["nu"], grid["nv"]))
         self.assertEqual(sum(v is not None for r in rows for v in r), m.points)
+
+    def test_light_scenes_from_the_stored_solution(self):
+        job = self.client.submit(FURNISHED_OFFICE.with_name("light-scenes.json"),
+                                 {"tolerance": 0.1})
+        with self.assertRaises(HTTPError) as running:  # the office takes a second to solve
+            job.light_scene("early", {"window": 1})
+        self.assertEqual(running.exception.status, 409)
+        self.assertEqual(job.wait(timeout=300)["status"], "done")
+        result = job.result()
+        both = job.light_scene("all on", {"window": 1, "door": 1})
+        self.assertEqual(both["name"], "all on")
+        window = job.light_scene("window", {"window": 1})
+        half = job.light_scene("window at half", {"window": 0.5})
+        for full, w, h in zip(result["sensors"][0]["illuminance"],
+                              window["sensors"][0]["illuminance"],
+                              half["sensors"][0]["illuminance"]):
+            self.assertAlmostEqual(h, 0.5 * w, delta=1e-3 * max(w, 1))  # light is linear
+            self.assertLessEqual(w, full * (1 + 1e-9))
+        for mine, all_on in zip(both["sensors"][0]["illuminance"],
+                                result["sensors"][0]["illuminance"]):
+            self.assertAlmostEqual(mine, all_on, delta=1e-3 * max(all_on, 1))
+        with self.assertRaises(BadRequestError) as unknown:
+            job.light_scene("typo", {"windw": 1})
+        self.assertEqual(unknown.exception.pointer, "/dimming/windw")
 
     def test_model_and_photometric_files_of_the_test_data(self):
         good = SOURCE_DIR / "tests" / "data" / "good"
