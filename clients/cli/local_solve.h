@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -25,8 +26,8 @@ struct SolveFlags {
 };
 
 /// Registers --tolerance, --max-seconds, --threads, --seed, --method, --max-memory-mb and
-/// --progress on a subcommand.
-void add_solve_flags(CLI::App& command, SolveFlags& flags);
+/// --progress on a subcommand; returns them.
+std::vector<CLI::Option*> add_solve_flags(CLI::App& command, SolveFlags& flags);
 
 /// Loads and checks `scene_file`; on problems prints them (`FILE: /pointer: message`) and gives
 /// nothing, so commands can check their own arguments against the scene before solving.

@@ -13,6 +13,7 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
 
+#include "radiant/server/blocking_pool.h"
 #include "radiant/server/config.h"
 #include "radiant/server/handlers.h"
 #include "radiant/server/job_queue.h"
@@ -25,6 +26,11 @@ namespace {
 
 namespace net = boost::asio;
 using namespace radiant::server;
+
+/// Pictures and CSV files of stored results are drawn one at a time beside the solves (each
+/// takes well under a second); this many more may wait before requests get 503.
+constexpr std::size_t kDrawingThreads = 1;
+constexpr std::size_t kMostWaitingDrawings = 16;
 
 int serve(const ServerConfig& config) {
     const auto listen = parse_listen(config.listen);
@@ -43,6 +49,9 @@ int serve(const ServerConfig& config) {
     Router router(ctx);
 
     net::io_context ioc(static_cast<int>(config.io_threads));
+    // After ioc, so that it stops first: its waiting tasks hold sessions of ioc's sockets.
+    BlockingPool drawing(kDrawingThreads, kMostWaitingDrawings);
+    ctx.blocking = &drawing;
     SessionLimits limits;
     limits.body_bytes = config.max_body_bytes;
     const net::ip::tcp::endpoint endpoint(net::ip::make_address(listen->host), listen->port);

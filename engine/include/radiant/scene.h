@@ -102,6 +102,8 @@ struct Settings {
     double tolerance = 0.01;  ///< target relative error of the solve
     std::optional<double> max_seconds;
     std::string method = "auto";
+    /// Significant digits of the values in the JSON result (1–17); the engine ignores it.
+    int digits = 4;
 };
 
 struct Scene {

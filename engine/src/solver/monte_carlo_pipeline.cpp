@@ -95,12 +95,17 @@ SolvedMesh display_mesh(const PreparedScene& scene, const ElementMesh& mesh,
     return out;
 }
 
+/// What progress reports of the estimate: nothing before a level's first round has one.
+std::optional<double> estimate_so_far(double reported) {
+    return std::isfinite(reported) ? std::optional<double>(reported) : std::nullopt;
+}
+
 std::vector<SensorResult> sensor_results(const PreparedScene& scene,
                                          const std::vector<GatheredPoint>& points) {
     std::vector<SensorResult> out;
     std::size_t next = 0;
     for (const PreparedSensorSet& set : scene.sensors) {
-        SensorResult r = sensor_result_for(set);
+        SensorResult r = sensor_result_for(set, scene.world_origin);
         for (double& v : r.illuminance) v = points[next++].illuminance;
         fill_sensor_statistics(r);
         out.push_back(std::move(r));
@@ -137,7 +142,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     for (int refinements = 0;; ++refinements, edge *= kRefinementRatio) {
         // Stage: meshing — elements, and a ray tracer over them so that a hit names its element.
         Clock::time_point stage_start = Clock::now();
-        report("meshing", 0.02, rounds, reported);
+        report("meshing", 0.02, rounds, estimate_so_far(reported));
         level = std::make_unique<MonteCarloLevel>(scene, edge, options_.seed);
         elements_ = level->mesh.size();
         mesh_version = kFirstMeshVersion + static_cast<std::uint64_t>(refinements);
@@ -155,7 +160,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         for (;; ++rounds) {
             // Stage: photons — the reflected light field, to this round's budget.
             stage_start = Clock::now();
-            report("photons", 0.1, rounds, reported);
+            report("photons", 0.1, rounds, estimate_so_far(reported));
             const std::uint64_t photon_rays =
                 field.trace(budget.photons - std::min(budget.photons, field.photons()),
                             level->sources, *level->visibility, stop);
@@ -164,7 +169,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             photons.seconds += seconds_since(stage_start);
             // Stage: gather — the sensors' ray sets, to this round's budget.
             stage_start = Clock::now();
-            report("gather", 0.5, rounds, reported);
+            report("gather", 0.5, rounds, estimate_so_far(reported));
             const std::uint64_t gather_rays = gather.gather(budget.sets, stop);
             rays_ += gather_rays;
             gathering.rays += gather_rays;
@@ -181,7 +186,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                     display_mesh(scene, level->mesh, solved_sides(scene, level->mesh, field))),
                 mesh_version,
                 std::make_shared<const std::vector<SensorResult>>(sensor_results(scene, points)));
-            report("estimate", 0.9, rounds + 1, reported);
+            report("estimate", 0.9, rounds + 1, estimate_so_far(reported));
             // A round cut short by a cancel or the time limit has not earned `converged`.
             const bool complete = field.photons() >= budget.photons && gather.sets() >= budget.sets;
             if (!complete || should_stop()) {

@@ -5,9 +5,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 
+#include "radiant/server/blocking_pool.h"
 #include "radiant/server/http.h"
 #include "radiant/server/job_queue.h"
 #include "radiant/server/job_store.h"
@@ -21,9 +23,14 @@ struct ServiceContext {
     JobStore& store;
     Metrics& metrics;
     std::size_t max_body_bytes;
+    /// Where deferred work runs (main's pool); null: the caller runs it (tests without sockets).
+    BlockingPool* blocking = nullptr;
 };
 
 using Query = std::map<std::string, std::string>;
+
+/// A response whose making must not hold up an I/O thread (see RouteResult::deferred).
+using DeferredResponse = std::function<Response()>;
 
 namespace handlers {
 
@@ -35,6 +42,19 @@ Response get_result(ServiceContext& ctx, const Request& request, const std::stri
 /// The solved mesh and sensors as binary glTF (`radiant solve --gltf`); a running job's from its
 /// latest snapshot, without sensors (they are computed at the end of a solve).
 Response get_result_glb(ServiceContext& ctx, const Request& request, const std::string& id);
+/// Files made from a finished job's stored result, without solving again; their work is
+/// deferred. `sensors.csv`: every sensor point (radiant solve --csv).
+DeferredResponse get_sensors_csv(ServiceContext& ctx, const Request& request,
+                                 const std::string& id);
+/// `plan.png?sensors=NAME&size=PX&max_lux=LX`: a sensor set's false-colour map (radiant plan).
+DeferredResponse get_plan_png(ServiceContext& ctx, const Request& request, const std::string& id,
+                              const Query& query);
+/// `view.png?eye=X,Y,Z&target=X,Y,Z&up=…&fov=DEG&width=PX&height=PX&falsecolor=1&max_lux=LX&
+/// exposure=CD_M2` (metres): a perspective picture of the solved mesh (radiant render).
+DeferredResponse get_view_png(ServiceContext& ctx, const Request& request, const std::string& id,
+                              const Query& query);
+/// proto/openapi.yaml, as the daemon was built with it.
+Response openapi(const Request& request);
 Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id);
 Response list_jobs(ServiceContext& ctx, const Request& request, const Query& query);
 Response healthz(ServiceContext& ctx, const Request& request);

@@ -20,6 +20,9 @@ struct EventStreamStart {
 struct RouteResult {
     Response response;
     std::optional<EventStreamStart> events;
+    /// Set instead of `response` by handlers whose work is too slow for an I/O thread: the
+    /// session runs it on the service's BlockingPool and sends what it returns. Never throws.
+    DeferredResponse deferred = {};
 };
 
 /// "a=1&b=x%20y" → {a: 1, b: "x y"}; later duplicates win.

@@ -5,10 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "picture/image.h"
+#include "radiant/picture/image.h"
+#include "radiant/result.h"
 #include "radiant/vec3.h"
 
-namespace radiant::cli {
+namespace radiant::picture {
 
 struct SensorPlan {
     std::string title;
@@ -18,7 +19,10 @@ struct SensorPlan {
     double max_lux = 0;        ///< top of the scale; 0 = the largest value, rounded up
 };
 
+/// The plan of one sensor set of a result, titled "SCENE - SET".
+SensorPlan sensor_plan_of(const std::string& scene_name, const SensorResult& set, double max_lux);
+
 /// Throws std::invalid_argument when there are no points or lux and points differ in count.
 Image draw_sensor_plan(const SensorPlan& plan, int map_pixels);
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture
