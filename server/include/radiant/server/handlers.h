@@ -1,6 +1,7 @@
 // The endpoint handlers of contract §4: plain functions from a request to a response, so tests
 // call them without sockets. They run on I/O threads and therefore never solve: they parse,
-// read or write the store and the queue, and return.
+// read or write the store and the queue, and return. Those that draw or convert a stored result
+// return their work instead (DeferredResponse), for the session to run on a BlockingPool.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,6 @@
 // Maps method + path to a handler. route() is a plain function of the request, so tests drive the
-// whole API without sockets; only the event stream needs the session to keep writing.
+// whole API without sockets; only the event stream needs the session to keep writing, and
+// deferred work (pictures, CSV) a thread that is not an I/O thread.
 #pragma once
 
 #include <cstdint>
