@@ -11,7 +11,16 @@
 
 namespace radiant::cli {
 
+void check_output_path(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status) || std::filesystem::is_regular_file(status)) return;
+    throw OutputRefused(path.string() +
+                        " is not a regular file; the output goes to a new or regular file only");
+}
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+    check_output_path(path);
     // Same directory as the target, so that rename() does not cross file systems.
     std::string temp = path.string() + ".XXXXXX";
     const int fd = mkstemp(temp.data());

@@ -36,6 +36,7 @@ http::request<http::string_body> make_request(const ServerUrl& server, http::ver
     request.set(http::field::host, server.host + ":" + server.port);
     request.set(http::field::user_agent, "radiant-cli");
     if (!body.empty()) request.set(http::field::content_type, "application/json");
+    if (!server.token.empty()) request.set(http::field::authorization, "Bearer " + server.token);
     request.body() = body;
     request.prepare_payload();
     return request;

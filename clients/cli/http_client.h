@@ -12,6 +12,7 @@ namespace radiant::cli {
 struct ServerUrl {
     std::string host;
     std::string port;
+    std::string token{};  ///< sent as "Authorization: Bearer" when not empty
 };
 
 /// "http://HOST:PORT" with an optional trailing slash (port defaults to 80); nothing otherwise.
@@ -29,7 +30,8 @@ struct ConnectionError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// `method` is "GET", "POST" or "DELETE"; `body` is sent as application/json when non-empty.
+/// `method` is "GET", "POST" or "DELETE"; `body` is sent as application/json when non-empty,
+/// as radiantd requires for a scene.
 HttpReply http_request(const ServerUrl& server, const std::string& method,
                        const std::string& target, const std::string& body = "");
 

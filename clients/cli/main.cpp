@@ -1,10 +1,14 @@
 // radiant: solve or validate radiant-scene/1 files locally, or submit them to radiantd and follow
 // the jobs (contract §1, §4).
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 
+#include "atomic_file.h"
 #include "exit_codes.h"
 #include "http_client.h"
 #include "import_command.h"
@@ -39,6 +43,9 @@ int main(int argc, char** argv) {
             // Usage errors are bad input (2); --help is a success.
             return app.exit(e) == 0 ? radiant::cli::kExitOk : radiant::cli::kExitBadInput;
         }
+    } catch (const radiant::cli::OutputRefused& e) {
+        std::cerr << "radiant: " << e.what() << '\n';
+        return radiant::cli::kExitBadInput;
     } catch (const radiant::cli::ConnectionError& e) {
         std::cerr << "radiant: " << e.what() << '\n';
         return radiant::cli::kExitFailure;
@@ -47,6 +54,12 @@ int main(int argc, char** argv) {
         return radiant::cli::kExitFailure;
     } catch (...) {
         std::cerr << "radiant: unknown internal error\n";
+        return radiant::cli::kExitFailure;
+    }
+    // Output that did not arrive (a full disk, a closed pipe) is a failure, not a success.
+    std::cout.flush();
+    if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::cerr << "radiant: cannot write the output to stdout: " << std::strerror(errno) << '\n';
         return radiant::cli::kExitFailure;
     }
     return exit_code;

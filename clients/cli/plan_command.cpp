@@ -26,7 +26,7 @@ struct PlanArgs {
 };
 
 int run_plan(const PlanArgs& args) {
-    const std::optional<Scene> scene = load_checked_scene(args.scene);
+    const std::optional<Scene> scene = load_checked_scene(args.scene, args.flags);
     if (!scene) return kExitBadInput;
     // The set is looked up before solving, so a wrong name costs no solve.
     const std::vector<SensorSet>& sets = scene->sensors;
@@ -44,7 +44,7 @@ int run_plan(const PlanArgs& args) {
     std::optional<Result> result;
     if (args.result.empty()) {
         result = solve_locally(*scene, args.flags, false);
-        if (report_failed_solve(*result)) return kExitFailure;
+        if (const auto code = report_solve(args.scene, *scene, args.flags, *result)) return *code;
     } else {
         result = load_stored_result(args.result, *scene, false);
         if (!result) return kExitBadInput;

@@ -50,20 +50,8 @@ picture::Camera camera_from(const RenderArgs& args, const Scene& scene, picture:
     return fallback;
 }
 
-/// The solved result to draw: the --result file, or a solve of the scene now.
-std::optional<Result> solved_result(const RenderArgs& args, const Scene& scene) {
-    if (!args.result.empty()) return load_stored_result(args.result, scene, true);
-    Result result = solve_locally(scene, args.flags, true);
-    if (report_failed_solve(result)) return std::nullopt;
-    if (!result.mesh) {
-        std::cerr << "radiant: the solve returned no mesh to render\n";
-        return std::nullopt;
-    }
-    return result;
-}
-
 int run_render(const RenderArgs& args) {
-    const std::optional<Scene> scene = load_checked_scene(args.scene);
+    const std::optional<Scene> scene = load_checked_scene(args.scene, args.flags);
     if (!scene) return kExitBadInput;
     // A camera given in full is checked before solving, so a bad one costs no solve.
     if (args.eye && args.target) {
@@ -72,8 +60,19 @@ int run_render(const RenderArgs& args) {
             return kExitBadInput;
         }
     }
-    const std::optional<Result> result = solved_result(args, *scene);
-    if (!result) return args.result.empty() ? kExitFailure : kExitBadInput;
+    // The solved result to draw: the --result file, or a solve of the scene now.
+    std::optional<Result> result;
+    if (args.result.empty()) {
+        result = solve_locally(*scene, args.flags, true);
+        if (const auto code = report_solve(args.scene, *scene, args.flags, *result)) return *code;
+        if (!result->mesh) {
+            std::cerr << "radiant: the solve returned no mesh to render\n";
+            return kExitFailure;
+        }
+    } else {
+        result = load_stored_result(args.result, *scene, true);
+        if (!result) return kExitBadInput;
+    }
     const picture::Camera camera =
         camera_from(args, *scene, picture::default_camera(*result->mesh));
     try {

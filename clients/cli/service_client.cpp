@@ -2,25 +2,47 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
 #include "exit_codes.h"
+#include "progress_text.h"
 
 namespace radiant::cli {
 
-void add_server_option(CLI::App* cmd, const std::shared_ptr<std::string>& url) {
-    *url = default_server_url();
-    cmd->add_option("--server", *url,
-                    "radiantd base URL (default $RADIANT_SERVER or " + *url + ")");
+void add_server_options(CLI::App* cmd, const std::shared_ptr<ServerOptions>& options) {
+    options->url = default_server_url();
+    cmd->add_option("--server", options->url,
+                    "radiantd base URL (default $RADIANT_SERVER or " + options->url + ")");
+    cmd->add_option("--token-file", options->token_file,
+                    "file holding the service's bearer token (default $RADIANT_TOKEN_FILE; the "
+                    "token itself may be in $RADIANT_TOKEN)")
+        ->envname("RADIANT_TOKEN_FILE");
 }
 
-ServerUrl server_of(const std::string& url) {
-    const auto server = parse_server_url(url);
-    if (!server) throw CLI::ValidationError("--server", "expected http://HOST[:PORT], got " + url);
+ServerUrl server_of(const ServerOptions& options) {
+    auto server = parse_server_url(options.url);
+    if (!server) {
+        throw CLI::ValidationError("--server", "expected http://HOST[:PORT], got " + options.url);
+    }
+    if (!options.token_file.empty()) {
+        std::ifstream in(options.token_file);
+        if (!in || !std::getline(in, server->token)) {
+            throw CLI::ValidationError("--token-file", "cannot read " + options.token_file);
+        }
+        // The first line, as radiantd reads it; a trailing newline or CR is no part of it.
+        while (!server->token.empty() &&
+               std::isspace(static_cast<unsigned char>(server->token.back())))
+            server->token.pop_back();
+    } else if (const char* token = std::getenv("RADIANT_TOKEN")) {
+        server->token = token;
+    }
     return *server;
 }
 
@@ -58,15 +80,7 @@ std::string watch_job(const ServerUrl& server, const std::string& id) {
                 return false;
             }
             if (event == "progress" && tty) {
-                constexpr int kWidth = 30;
-                const double fraction = json.value("fraction", 0.0);
-                const int filled = static_cast<int>(fraction * kWidth + 0.5);
-                std::fprintf(stderr, "\r[%s%s] %5.1f%%  %-12s it %-6zu err %.1e  %.1fs ",
-                             std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                             std::string(static_cast<std::size_t>(kWidth - filled), '-').c_str(),
-                             100 * fraction, json.value("stage", "").c_str(),
-                             json.value("iterations", std::size_t{0}),
-                             json.value("error_estimate", 0.0), json.value("elapsed_seconds", 0.0));
+                std::fprintf(stderr, "\r%s", service_progress_line(json).c_str());
                 std::fflush(stderr);
                 drawn = true;
             }

@@ -11,12 +11,19 @@
 
 namespace radiant::cli {
 
-/// Adds --server URL (default $RADIANT_SERVER or http://127.0.0.1:8080); the value lands in
-/// `*url`.
-void add_server_option(CLI::App* cmd, const std::shared_ptr<std::string>& url);
+/// The options that say which service to talk to, and how.
+struct ServerOptions {
+    std::string url;
+    std::string token_file;
+};
 
-/// The server of `url`; throws CLI::ValidationError for anything but http://HOST[:PORT].
-ServerUrl server_of(const std::string& url);
+/// Adds --server URL (default $RADIANT_SERVER or http://127.0.0.1:8080) and --token-file FILE
+/// (default $RADIANT_TOKEN_FILE); the values land in `*options`.
+void add_server_options(CLI::App* cmd, const std::shared_ptr<ServerOptions>& options);
+
+/// The server of `options`, with the token of its token file, else $RADIANT_TOKEN. Throws
+/// CLI::ValidationError for a URL other than http://HOST[:PORT] or an unreadable token file.
+ServerUrl server_of(const ServerOptions& options);
 
 /// Prints a service error body ({"error": {...}}) on stderr, prefixed with `what`, and returns
 /// the exit code for the HTTP status: 2 for a refusal of the input (4xx), 1 otherwise.

@@ -26,9 +26,16 @@ struct SolveArgs {
 };
 
 int run_solve(const SolveArgs& args) {
-    const std::optional<Scene> scene = load_checked_scene(args.scene);
+    // Before the solve, so that a refused output costs nothing.
+    for (const std::string& path : {args.out, args.gltf}) {
+        if (!path.empty()) check_output_path(path);
+    }
+    const std::optional<Scene> scene = load_checked_scene(args.scene, args.flags);
     if (!scene) return kExitBadInput;
     Result result = solve_locally(*scene, args.flags, args.mesh || !args.gltf.empty());
+    // A strict refusal writes nothing; a failed solve still writes its result document.
+    const std::optional<int> unsuccessful = report_solve(args.scene, *scene, args.flags, result);
+    if (unsuccessful == kExitBadInput) return kExitBadInput;
     if (!args.gltf.empty() && result.status != SolveStatus::failed) {
         write_file_atomically(args.gltf, proto::result_to_glb(result, *scene));
     }
@@ -43,7 +50,7 @@ int run_solve(const SolveArgs& args) {
     } else {
         write_file_atomically(args.out, text);
     }
-    return report_failed_solve(result) ? kExitFailure : kExitOk;
+    return unsuccessful.value_or(kExitOk);
 }
 
 }  // namespace

@@ -1,14 +1,15 @@
 #include "submit_command.h"
 
+#include <array>
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "exit_codes.h"
+#include "radiant/proto/scene_json.h"
 #include "service_client.h"
 
 namespace radiant::cli {
@@ -26,9 +27,23 @@ int run_submit(const SubmitArgs& args, const ServerUrl& server) {
         std::cerr << args.scene << ": cannot read the file\n";
         return kExitBadInput;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    const HttpReply posted = http_request(server, "POST", "/v1/jobs", text.str());
+    // Read at most one byte over the service's limit, so that /dev/zero or a growing file
+    // costs no more than the largest scene the service would take.
+    const std::size_t limit = proto::ParseLimits{}.max_bytes;
+    std::string text;
+    std::array<char, 1 << 16> chunk;
+    while (text.size() <= limit && (in.read(chunk.data(), chunk.size()) || in.gcount() > 0)) {
+        text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    }
+    if (in.bad()) {
+        std::cerr << args.scene << ": read error\n";
+        return kExitBadInput;
+    }
+    if (text.size() > limit) {
+        std::cerr << args.scene << ": : the scene is over the limit of " << limit << " bytes\n";
+        return kExitBadInput;
+    }
+    const HttpReply posted = http_request(server, "POST", "/v1/jobs", text);
     if (posted.status != 202) return report_error(args.scene, posted);
     const std::string id = nlohmann::json::parse(posted.body).at("id");
     if (!args.wait) {
@@ -48,11 +63,12 @@ int run_submit(const SubmitArgs& args, const ServerUrl& server) {
 void add_submit_command(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("submit", "Submit a scene to radiantd; print the job id");
     auto args = std::make_shared<SubmitArgs>();
-    auto url = std::make_shared<std::string>();
+    auto server = std::make_shared<ServerOptions>();
     cmd->add_option("scene", args->scene, "radiant-scene/1 JSON file")->required();
     cmd->add_flag("--wait", args->wait, "follow the job and print its result when it finishes");
-    add_server_option(cmd, url);
-    cmd->callback([args, url, &exit_code] { exit_code = run_submit(*args, server_of(*url)); });
+    add_server_options(cmd, server);
+    cmd->callback(
+        [args, server, &exit_code] { exit_code = run_submit(*args, server_of(*server)); });
 }
 
 }  // namespace radiant::cli

@@ -12,11 +12,11 @@ namespace radiant::cli {
 void add_watch_command(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand("watch", "Follow a radiantd job's progress until it finishes");
     auto id = std::make_shared<std::string>();
-    auto url = std::make_shared<std::string>();
+    auto server = std::make_shared<ServerOptions>();
     cmd->add_option("id", *id, "job id")->required();
-    add_server_option(cmd, url);
-    cmd->callback([id, url, &exit_code] {
-        const std::string status = watch_job(server_of(*url), *id);
+    add_server_options(cmd, server);
+    cmd->callback([id, server, &exit_code] {
+        const std::string status = watch_job(server_of(*server), *id);
         if (status.empty()) {
             exit_code = kExitBadInput;
             return;

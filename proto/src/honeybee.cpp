@@ -1,6 +1,7 @@
 #include "radiant/proto/honeybee.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -27,6 +28,10 @@ constexpr Default kCeiling{"default-ceiling", 0.8, false};
 constexpr Default kAperture{"default-aperture", 0.08, false};  // glass: most light leaves
 constexpr Default kDoor{"default-door", 0.5, false};
 constexpr Default kShade{"default-shade", 0.35, true};
+
+/// Ear clipping takes up to cubic time in the vertices of a face with holes; real faces (a wall
+/// and its windows) have tens.
+constexpr std::size_t kMaxVerticesWithHoles = 1000;
 
 class Converter {
 public:
@@ -225,8 +230,15 @@ void Converter::face3d(const Json& object, const Ptr& p, const Default& fallback
     if (reverse) std::reverse(polygon.begin(), polygon.end());
     Json surface = {{"name", name_of(object, p.to_string())},
                     {"material", material(object, fallback)}};
+    std::size_t ring_vertices = polygon.size();
+    for (const Json& hole : holes) ring_vertices += hole.size();
     if (holes.empty()) {
         surface["polygon"] = polygon;
+    } else if (ring_vertices > kMaxVerticesWithHoles) {
+        report(at / "holes", "a face with holes may have at most " +
+                                 std::to_string(kMaxVerticesWithHoles) + " vertices, not " +
+                                 std::to_string(ring_vertices));
+        return;
     } else if (auto mesh = mesh_with_holes(polygon, holes)) {
         surface["mesh"] = std::move(*mesh);
     } else {
@@ -317,7 +329,9 @@ void Converter::sensor_grids(const Json& grids, const Ptr& p) {
             report(at / "sensors", "a sensor grid needs sensors");
             continue;
         }
-        std::vector<std::pair<Json, Json>> sets;  // direction → points
+        std::vector<std::pair<Json, Json>> sets;  // direction → points, in order of appearance
+        // Looked up by value: a linear search would be quadratic in the number of directions.
+        std::map<std::array<double, 3>, std::size_t> set_of_direction;
         for (std::size_t s = 0; s < sensors->size(); ++s) {
             const Json& sensor = (*sensors)[s];
             const Json* pos_json = get(sensor, "pos");
@@ -325,13 +339,11 @@ void Converter::sensor_grids(const Json& grids, const Ptr& p) {
             const auto pos = point(pos_json ? *pos_json : Json(), at / "sensors" / s / "pos");
             const auto dir = point(dir_json ? *dir_json : Json(), at / "sensors" / s / "dir");
             if (!pos || !dir) continue;
-            auto set = std::find_if(sets.begin(), sets.end(),
-                                    [&](const auto& e) { return e.first == *dir; });
-            if (set == sets.end()) {
-                sets.emplace_back(*dir, Json::array());
-                set = std::prev(sets.end());
-            }
-            set->second.push_back(*pos);
+            const std::array<double, 3> key{(*dir)[0].get<double>(), (*dir)[1].get<double>(),
+                                            (*dir)[2].get<double>()};
+            const auto [slot, added] = set_of_direction.try_emplace(key, sets.size());
+            if (added) sets.emplace_back(*dir, Json::array());
+            sets[slot->second].second.push_back(*pos);
         }
         const std::string name = name_of(grids[g], "grid " + std::to_string(g));
         for (std::size_t k = 0; k < sets.size(); ++k) {
@@ -348,8 +360,8 @@ void Converter::sensor_grids(const Json& grids, const Ptr& p) {
 HoneybeeOutcome honeybee_to_scene(std::string_view hbjson_text) {
     HoneybeeOutcome outcome;
     auto parsed = parse_json_text(hbjson_text);
-    if (auto* problem = std::get_if<Problem>(&parsed)) {
-        outcome.problems.push_back(std::move(*problem));
+    if (auto* refused = std::get_if<JsonRefusal>(&parsed)) {
+        outcome.problems.push_back(std::move(refused->problem));
         return outcome;
     }
     const Json& model = std::get<Json>(parsed);

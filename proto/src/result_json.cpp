@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include "radiant/proto/warnings_json.h"
+
 namespace radiant::proto {
 namespace {
 
@@ -161,6 +163,8 @@ nlohmann::json result_to_json(const Result& result, int digits) {
     const bool failed = result.status == SolveStatus::failed;
     nlohmann::json doc = document(result, to_string(result.status),
                                   failed && result.error.empty() ? "unknown error" : result.error);
+    if (result.status == SolveStatus::stopped && !result.stop_reason.empty())
+        doc["stop_reason"] = result.stop_reason;
     doc["stats"] = stats_json(result.stats, round);
     doc["sensors"] = sensors_to_json(result.sensors, digits);
     nlohmann::json& surfaces = doc["surfaces"] = nlohmann::json::array();
@@ -170,6 +174,7 @@ nlohmann::json result_to_json(const Result& result, int digits) {
                             {"average_irradiance", round.value(s.average_irradiance)},
                             {"average_radiosity", round.value(s.average_radiosity)}});
     }
+    doc["warnings"] = warnings_to_json(result.warnings);
     if (result.mesh) doc["mesh"] = mesh_json(*result.mesh, round);
     if (const auto bad = non_finite(doc, nlohmann::json::json_pointer())) {
         nlohmann::json failed_doc = document(
@@ -177,6 +182,7 @@ nlohmann::json result_to_json(const Result& result, int digits) {
         failed_doc["stats"] = nlohmann::json::object();
         failed_doc["sensors"] = nlohmann::json::array();
         failed_doc["surfaces"] = nlohmann::json::array();
+        failed_doc["warnings"] = warnings_to_json(result.warnings);
         return failed_doc;
     }
     return doc;

@@ -251,8 +251,8 @@ private:
 ResultReadOutcome read_result(std::string_view json_text) {
     ResultReadOutcome out;
     auto parsed = parse_json_text(json_text);
-    if (auto* problem = std::get_if<Problem>(&parsed)) {
-        out.problems.push_back(std::move(*problem));
+    if (auto* refusal = std::get_if<JsonRefusal>(&parsed)) {
+        out.problems.push_back(std::move(refusal->problem));
         return out;
     }
     ResultReader reader;

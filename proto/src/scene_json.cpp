@@ -50,11 +50,17 @@ public:
     std::set<std::size_t> grid_sensors_;  ///< sensor sets whose points come from a grid
     /// Per engine surface: its document index and, for an imported model, the key naming it.
     std::vector<std::pair<std::size_t, std::string>> surface_origins_;
+    std::size_t unlisted_ = 0;  ///< problems beyond kMaxListedProblems, counted only
+    std::size_t faces_ = 0;     ///< polygons, mesh faces and box sides read so far
 
 private:
     void report(const Ptr& p, std::string message, bool breaks = true) {
         std::string pointer = p.to_string();
         if (breaks) broken_.insert(entity_of(pointer));
+        if (problems_.size() >= kMaxListedProblems) {
+            ++unlisted_;
+            return;
+        }
         problems_.push_back({std::move(pointer), std::move(message)});
     }
 
@@ -108,6 +114,12 @@ private:
         return static_cast<long long>(d);
     }
 
+    bool boolean(const Json& j, const Ptr& p, const char* what) {
+        if (j.is_boolean()) return j.get<bool>();
+        report(p, std::string(what) + " must be true or false");
+        return false;
+    }
+
     std::string string(const Json& j, const Ptr& p, const char* what) {
         if (j.is_string()) return j.get<std::string>();
         report(p, std::string(what) + " must be a string");
@@ -158,8 +170,17 @@ private:
     std::vector<Vec3> grid(const Json& j, const Ptr& p);
     Settings settings(const Json& j, const Ptr& p);
 
+    /// What is left of `limit` once `used` is taken.
+    static std::size_t left(std::size_t limit, std::size_t used) {
+        return limit - std::min(limit, used);
+    }
+    void count_geometry(const Surface& s);
+
     const ParseLimits& limits_;
     std::optional<std::filesystem::path> scene_directory_;
+    /// Totals read so far: grids and models are checked against what is left of the scene's
+    /// limits before they are expanded, so many small ones cannot add up to a huge scene.
+    std::size_t vertices_ = 0, sensor_points_ = 0;
 };
 
 Scene SceneReader::read(const Json& root) {
@@ -235,13 +256,8 @@ Material SceneReader::material(const std::string& name, const Json& j, const Ptr
         }
     }
     if (const Json* e = member(j, p, "emission", false)) m.emission = emission(*e, p / "emission");
-    if (const Json* t = member(j, p, "two_sided", false)) {
-        if (t->is_boolean()) {
-            m.two_sided = t->get<bool>();
-        } else {
-            report(p / "two_sided", "two_sided must be true or false");
-        }
-    }
+    if (const Json* t = member(j, p, "two_sided", false))
+        m.two_sided = boolean(*t, p / "two_sided", "two_sided");
     return m;
 }
 
@@ -280,6 +296,8 @@ void SceneReader::add_surfaces(Scene& scene, const Json& j, const Ptr& p, std::s
     if (kind == std::end(kinds) || other_geometry || two_models) {
         surface_origins_.emplace_back(index, "");
         scene.surfaces.push_back(surface(j, p));
+        count_geometry(scene.surfaces.back());
+        scene.surfaces.back().pointer = p.to_string();
         return;
     }
     check_keys(j, p, {"name", "material", "mtl", kind->first});
@@ -288,6 +306,7 @@ void SceneReader::add_surfaces(Scene& scene, const Json& j, const Ptr& p, std::s
     request.unit = scene.units;
     request.scene_directory = scene_directory_;
     request.max_bytes = limits_.max_bytes;
+    request.budget = {left(limits_.scene.max_vertices, vertices_), left(limits_.max_faces, faces_)};
     const std::size_t problems_before = problems_.size();
     if (const Json* n = member(j, p, "name", true)) request.name = string(*n, p / "name", "name");
     if (const Json* m = member(j, p, "material", false))
@@ -311,10 +330,25 @@ void SceneReader::add_surfaces(Scene& scene, const Json& j, const Ptr& p, std::s
     }
     auto& [surfaces, materials] = std::get<ImportedSurfaces>(imported);
     for (Surface& s : surfaces) {
+        count_geometry(s);
         surface_origins_.emplace_back(index, kind->first);
+        s.pointer = p.to_string();
         scene.surfaces.push_back(std::move(s));
     }
     for (Material& m : materials) scene.materials.push_back(std::move(m));
+}
+
+void SceneReader::count_geometry(const Surface& s) {
+    if (const auto* polygon = std::get_if<Polygon>(&s.geometry)) {
+        vertices_ += polygon->size();
+        faces_ += 1;
+    } else if (const auto* mesh = std::get_if<MeshGeometry>(&s.geometry)) {
+        vertices_ += mesh->vertices.size();
+        faces_ += mesh->faces.size();
+    } else {
+        vertices_ += 8;
+        faces_ += 6;
+    }
 }
 
 Surface SceneReader::surface(const Json& j, const Ptr& p) {
@@ -461,6 +495,7 @@ SensorSet SceneReader::sensor(const Json& j, const Ptr& p, std::size_t index) {
         report(p, "a sensor set needs exactly one of points, grid or workplane");
     } else if (j.contains("points")) {
         s.points = points(j["points"], p / "points", "points");
+        sensor_points_ += s.points.size();
     } else if (j.contains("grid")) {
         grid_sensors_.insert(index);
         s.points = grid(j["grid"], p / "grid");
@@ -501,12 +536,20 @@ std::vector<Vec3> SceneReader::grid(const Json& j, const Ptr& p) {
     if (const Json* x = member(j, p, "nu", true)) nu = integer(*x, p / "nu", "nu", 1, max);
     if (const Json* x = member(j, p, "nv", true)) nv = integer(*x, p / "nv", "nv", 1, max);
     if (problems_.size() != problems_before || !nu || !nv) return {};
-    // Checked before expanding, so a hostile grid cannot exhaust memory.
-    if (*nu > max / *nv) {
-        report(p, "grid has " + std::to_string(*nu * *nv) + " points, over the limit of " +
-                      std::to_string(max));
+    // Checked against the total before expanding, so neither one hostile grid nor many small
+    // ones can exhaust memory.
+    const auto room = static_cast<long long>(left(limits_.scene.max_sensor_points, sensor_points_));
+    if (*nu > room / *nv) {
+        const std::string before =
+            sensor_points_ > 0
+                ? " (with the " + std::to_string(sensor_points_) + " sensor points before it)"
+                : "";
+        report(p, "grid has " + std::to_string(*nu * *nv) + " points" + before +
+                      ", over the limit of " + std::to_string(max) + " sensor points");
+        sensor_points_ += static_cast<std::size_t>(*nu) * static_cast<std::size_t>(*nv);
         return {};
     }
+    sensor_points_ += static_cast<std::size_t>(*nu * *nv);
     std::vector<Vec3> out;
     out.reserve(static_cast<std::size_t>(*nu * *nv));
     for (long long jv = 0; jv < *nv; ++jv) {
@@ -521,13 +564,15 @@ std::vector<Vec3> SceneReader::grid(const Json& j, const Ptr& p) {
 Settings SceneReader::settings(const Json& j, const Ptr& p) {
     Settings s;
     if (!object(j, p, "settings")) return s;
-    check_keys(j, p, {"tolerance", "max_seconds", "method", "digits"});
+    check_keys(j, p, {"tolerance", "max_seconds", "method", "strict", "digits"});
     if (const Json* t = member(j, p, "tolerance", false)) {
         s.tolerance = number(*t, p / "tolerance", "tolerance");
     }
     if (const Json* t = member(j, p, "max_seconds", false)) {
         s.max_seconds = number(*t, p / "max_seconds", "max_seconds");
     }
+    if (const Json* t = member(j, p, "strict", false))
+        s.strict = boolean(*t, p / "strict", "strict");
     if (const Json* d = member(j, p, "digits", false)) {
         if (const auto digits = integer(*d, p / "digits", "digits", 1, kMaxDigits)) {
             s.digits = static_cast<int>(*digits);
@@ -546,6 +591,18 @@ Settings SceneReader::settings(const Json& j, const Ptr& p) {
         }
     }
     return s;
+}
+
+/// Cuts `problems` to kMaxListedProblems, counting the cut ones (and `uncounted` more) in a last
+/// problem.
+void limit_problems(std::vector<Problem>& problems, std::size_t uncounted) {
+    if (problems.size() > kMaxListedProblems) {
+        uncounted += problems.size() - kMaxListedProblems;
+        problems.resize(kMaxListedProblems);
+    }
+    if (uncounted > 0) {
+        problems.push_back({"", std::to_string(uncounted) + " more problems are not listed"});
+    }
 }
 
 /// check_scene sees a grid only as its expanded points; point the user at the grid instead.
@@ -594,14 +651,17 @@ ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits,
         outcome.problems.push_back({"", "the document is " + std::to_string(json_text.size()) +
                                             " bytes, over the limit of " +
                                             std::to_string(limits.max_bytes)});
+        outcome.refusal = Refusal::over_budget;
         return outcome;
     }
-    auto parsed = parse_json_text(json_text);
-    if (auto* problem = std::get_if<Problem>(&parsed)) {
-        outcome.problems.push_back(std::move(*problem));
+    auto parsed = parse_json_text(json_text, limits.json);
+    if (auto* refused = std::get_if<JsonRefusal>(&parsed)) {
+        outcome.problems.push_back(std::move(refused->problem));
+        outcome.refusal = refused->over_budget ? Refusal::over_budget : Refusal::not_json;
         return outcome;
     }
     const Json& root = std::get<Json>(parsed);
+    outcome.refusal = Refusal::scene;
     if (!root.is_object()) {
         outcome.problems.push_back({"", "a scene must be a JSON object"});
         return outcome;
@@ -616,9 +676,19 @@ ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits,
         if (reader.broken_.contains(entity_of(p.pointer))) continue;
         outcome.problems.push_back(std::move(p));
     }
+    // The faces of the whole scene; the engine's own checks count its other totals.
+    if (reader.faces_ > limits.max_faces) {
+        outcome.problems.push_back({"/surfaces", std::to_string(reader.faces_) +
+                                                     " faces, over the limit of " +
+                                                     std::to_string(limits.max_faces)});
+    }
+    limit_problems(outcome.problems, reader.unlisted_);
     // Work planes need the checked floors.
     if (outcome.problems.empty()) outcome.problems = expand_workplanes(scene, limits.scene);
-    if (outcome.problems.empty()) outcome.scene = std::move(scene);
+    if (outcome.problems.empty()) {
+        outcome.scene = std::move(scene);
+        outcome.refusal = Refusal::none;
+    }
     return outcome;
 }
 
@@ -636,6 +706,7 @@ ParseOutcome load_scene_file(const std::filesystem::path& path, const ParseLimit
         outcome.problems.push_back({"", "the file is " + std::to_string(size) +
                                             " bytes, over the limit of " +
                                             std::to_string(limits.max_bytes)});
+        outcome.refusal = Refusal::over_budget;
         return outcome;
     }
     std::ifstream in(path, std::ios::binary);

@@ -1,8 +1,14 @@
 #include "radiant/server/config.h"
 
 #include <charconv>
+#include <fstream>
+#include <stdexcept>
 
 namespace radiant::server {
+
+std::filesystem::path default_web_root(const std::filesystem::path& executable) {
+    return (executable.parent_path() / ".." / "share" / "radiant" / "web").lexically_normal();
+}
 
 std::optional<ListenAddress> parse_listen(const std::string& text) {
     const std::size_t colon = text.rfind(':');
@@ -19,6 +25,18 @@ std::optional<ListenAddress> parse_listen(const std::string& text) {
     if (ec != std::errc{} || end != last || port > 65535) return std::nullopt;
     out.port = static_cast<std::uint16_t>(port);
     return out;
+}
+
+std::string read_token_file(const std::string& path) {
+    std::ifstream in(path);
+    std::string token;
+    if (!in || !std::getline(in, token))
+        throw std::runtime_error("cannot read the token file " + path);
+    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    while (!token.empty() && space(token.back())) token.pop_back();
+    while (!token.empty() && space(token.front())) token.erase(token.begin());
+    if (token.empty()) throw std::runtime_error("the token file " + path + " holds no token");
+    return token;
 }
 
 }  // namespace radiant::server

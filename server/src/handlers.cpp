@@ -9,6 +9,8 @@
 #include "radiant/proto/result_gltf.h"
 #include "radiant/proto/result_json.h"
 #include "radiant/proto/scene_json.h"
+#include "radiant/proto/warnings_json.h"
+#include "radiant/warnings.h"
 
 namespace radiant::server::handlers {
 namespace {
@@ -36,6 +38,14 @@ std::vector<SensorResult> stored_sensors(const std::string& document) {
     return sensors;
 }
 
+/// "application/json", with parameters ("; charset=utf-8") and in any case.
+bool is_json_media_type(std::string_view value) {
+    value = value.substr(0, value.find(';'));
+    while (!value.empty() && value.back() == ' ') value.remove_suffix(1);
+    return boost::beast::iequals(boost::beast::string_view(value.data(), value.size()),
+                                 "application/json");
+}
+
 Response job_response(const Request& request, http::status status, const JobRecord& job) {
     Response response = json_response(request, status, job_to_json(job));
     response.set(http::field::location, "/v1/jobs/" + job.id);
@@ -61,7 +71,8 @@ nlohmann::json running_result(ServiceContext& ctx, const JobRecord& job,
                                                     p.unshot_fraction, proto::kEstimateDigits)}}},
                           {"progress", job_progress_json(p)},
                           {"sensors", nlohmann::json::array()},
-                          {"surfaces", nlohmann::json::array()}};
+                          {"surfaces", nlohmann::json::array()},
+                          {"warnings", job.warnings}};
     if (p.error_estimate) {
         doc["stats"]["error_estimate"] =
             proto::round_up_significant(*p.error_estimate, proto::kEstimateDigits);
@@ -83,6 +94,13 @@ std::string add_mesh(std::string document, const CompactMesh& mesh) {
     return document + ",\"mesh\":{" + geometry_json(mesh) + "," + radiosity_json(mesh) + "}}";
 }
 
+/// Warnings as the problems of a refusal: "message [code]" at the warning's pointer.
+std::vector<Problem> strict_problems(const std::vector<Warning>& warnings) {
+    std::vector<Problem> problems;
+    for (const Warning& w : warnings) problems.push_back({w.pointer, proto::message_with_code(w)});
+    return problems;
+}
+
 }  // namespace
 
 Response submit_job(ServiceContext& ctx, const Request& request) {
@@ -93,18 +111,37 @@ Response submit_job(ServiceContext& ctx, const Request& request) {
             request, http::status::payload_too_large, "too_large",
             "the request body is larger than " + std::to_string(ctx.max_body_bytes) + " bytes");
     }
-    if (!nlohmann::json::accept(body)) {
-        // parse_scene gives the line and column of the syntax error.
-        const proto::ParseOutcome outcome = proto::parse_scene(body);
-        return error_response(request, http::status::bad_request, "invalid_json",
-                              "the body is not JSON", "", outcome.problems);
+    // A web page may send text/plain across origins without asking first; it cannot send JSON.
+    if (!is_json_media_type(to_std(request[http::field::content_type]))) {
+        return error_response(request, http::status::unsupported_media_type,
+                              "unsupported_media_type",
+                              "a scene is sent with Content-Type: application/json");
     }
     proto::ParseLimits limits;
     limits.max_bytes = ctx.max_body_bytes;
+    // One pass: JSON syntax and budget, then the scene.
     const proto::ParseOutcome outcome = proto::parse_scene(body, limits);
-    if (!outcome.ok()) {
-        return error_response(request, http::status::bad_request, "invalid_scene", "", "",
-                              outcome.problems);
+    switch (outcome.refusal) {
+        case proto::Refusal::none:
+            break;
+        case proto::Refusal::not_json:
+            return error_response(request, http::status::bad_request, "invalid_json", "", "",
+                                  outcome.problems);
+        case proto::Refusal::over_budget:
+            return error_response(request, http::status::payload_too_large, "too_complex", "", "",
+                                  outcome.problems);
+        case proto::Refusal::scene:
+            return error_response(request, http::status::bad_request, "invalid_scene", "", "",
+                                  outcome.problems);
+    }
+    // A strict scene is refused with its warnings before it is queued. The checks build a ray
+    // tracer over the scene: only strict scenes pay that here (docs/warnings.md).
+    if (outcome.scene->settings.strict) {
+        if (const std::vector<Problem> warned = strict_problems(check_modelling(*outcome.scene));
+            !warned.empty()) {
+            return error_response(request, http::status::bad_request, "strict_warnings", "", "",
+                                  warned);
+        }
     }
     const std::string key(request["Idempotency-Key"]);
     const SubmitOutcome submitted = ctx.jobs.submit(body, key);
@@ -120,6 +157,13 @@ Response submit_job(ServiceContext& ctx, const Request& request) {
         case SubmitOutcome::Kind::queue_full: {
             Response response = error_response(request, http::status::too_many_requests,
                                                "queue_full", "the job queue is full; retry later");
+            response.set(http::field::retry_after, kRetryAfterSeconds);
+            return response;
+        }
+        case SubmitOutcome::Kind::store_unwritable: {
+            Response response =
+                error_response(request, http::status::service_unavailable, "store_unwritable",
+                               "the job store cannot take the job: " + submitted.reason);
             response.set(http::field::retry_after, kRetryAfterSeconds);
             return response;
         }
@@ -196,7 +240,17 @@ Response get_result_glb(ServiceContext& ctx, const Request& request, const std::
 }
 
 Response cancel_job(ServiceContext& ctx, const Request& request, const std::string& id) {
-    const auto job = ctx.jobs.cancel(id);
+    std::optional<JobRecord> job;
+    try {
+        job = ctx.jobs.cancel(id);
+    } catch (const StoreError& e) {
+        // A cancel answered 202 must survive a restart; one the store cannot keep is refused.
+        Response response =
+            error_response(request, http::status::service_unavailable, "store_unwritable",
+                           std::string("the cancel could not be stored: ") + e.what());
+        response.set(http::field::retry_after, kRetryAfterSeconds);
+        return response;
+    }
     if (!job) return unknown_job(request, id);
     // 202 while a solve is still stopping (running, or just taken from the queue by a worker);
     // 200 once the state is final.
@@ -233,9 +287,16 @@ Response list_jobs(ServiceContext& ctx, const Request& request, const Query& que
 }
 
 Response healthz(ServiceContext& ctx, const Request& request) {
-    const bool stopping = ctx.jobs.shutting_down();
-    return json_response(request, stopping ? http::status::service_unavailable : http::status::ok,
-                         {{"status", stopping ? "shutting_down" : "ok"}});
+    if (ctx.jobs.shutting_down()) {
+        return json_response(request, http::status::service_unavailable,
+                             {{"status", "shutting_down"}});
+    }
+    const StoreHealth store = ctx.store.health();
+    if (!store.writable) {
+        return json_response(request, http::status::service_unavailable,
+                             {{"status", "store_unwritable"}, {"reason", store.reason}});
+    }
+    return json_response(request, http::status::ok, {{"status", "ok"}});
 }
 
 Response metrics(ServiceContext& ctx, const Request& request) {

@@ -112,7 +112,8 @@ nlohmann::json job_to_json(const JobRecord& job) {
                            {"progress", job_progress_json(p)},
                            {"created", time_or_null(job.created)},
                            {"started", time_or_null(job.started)},
-                           {"finished", time_or_null(job.finished)}};
+                           {"finished", time_or_null(job.finished)},
+                           {"warnings", job.warnings}};
     if (!job.error.empty()) json["error"] = job.error;
     return json;
 }

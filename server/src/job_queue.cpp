@@ -11,6 +11,7 @@
 
 #include "radiant/proto/result_json.h"
 #include "radiant/proto/scene_json.h"
+#include "radiant/proto/warnings_json.h"
 #include "radiant/solve.h"
 
 namespace radiant::server {
@@ -73,6 +74,12 @@ struct JobQueue::LiveJob final : SolveObserver {
             std::max(record.progress.elapsed_seconds, s.progress.elapsed_seconds);
     }
 
+    void on_warnings(const std::vector<Warning>& warnings) noexcept override {
+        nlohmann::json json = proto::warnings_to_json(warnings);
+        const std::lock_guard lock(mutex);
+        record.warnings = std::move(json);
+    }
+
     JobRecord copy() const {
         const std::lock_guard lock(mutex);
         return record;
@@ -97,7 +104,15 @@ struct JobQueue::LiveJob final : SolveObserver {
 
 JobQueue::JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options)
     : store_(store), metrics_(metrics), options_(options) {
-    for (const std::string& id : store_.requeue_unfinished()) {
+    const UnfinishedJobs unfinished = store_.requeue_unfinished(kMaxJobAttempts);
+    for (const std::string& id : unfinished.cancelled) {
+        spdlog::info("job {} cancelled: its cancel was accepted before the restart", id);
+    }
+    for (const std::string& id : unfinished.failed) {
+        spdlog::warn("job {} failed: its process died during each of its {} solves", id,
+                     kMaxJobAttempts);
+    }
+    for (const std::string& id : unfinished.requeued) {
         std::optional<JobRecord> record = store_.find(id, false);
         if (!record) continue;
         auto job = std::make_shared<LiveJob>(std::move(*record));
@@ -117,13 +132,13 @@ SubmitOutcome JobQueue::submit(const std::string& scene_json, const std::string&
         if (idempotency_key.empty()) return std::nullopt;
         const auto existing = store_.find_by_idempotency_key(idempotency_key);
         if (!existing) return std::nullopt;
-        return SubmitOutcome{SubmitOutcome::Kind::replayed, *find(existing->id)};
+        return SubmitOutcome{SubmitOutcome::Kind::replayed, *find(existing->id), {}};
     };
     if (auto replayed = replay()) return *replayed;
 
     const std::lock_guard lock(mutex_);
-    if (stopping_) return {SubmitOutcome::Kind::shutting_down, {}};
-    if (queue_.size() >= options_.queue_limit) return {SubmitOutcome::Kind::queue_full, {}};
+    if (stopping_) return {SubmitOutcome::Kind::shutting_down, {}, {}};
+    if (queue_.size() >= options_.queue_limit) return {SubmitOutcome::Kind::queue_full, {}, {}};
     JobRecord record;
     record.id = new_job_id();
     record.status = JobStatus::queued;
@@ -132,7 +147,8 @@ SubmitOutcome JobQueue::submit(const std::string& scene_json, const std::string&
     record.created = now_millis();
     try {
         store_.insert(record);
-    } catch (const std::runtime_error&) {
+    } catch (const StoreError& e) {
+        if (e.unwritable()) return {SubmitOutcome::Kind::store_unwritable, {}, e.what()};
         // Two requests with one key raced; the unique index let the first one in.
         if (auto replayed = replay()) return *replayed;
         throw;
@@ -143,7 +159,7 @@ SubmitOutcome JobQueue::submit(const std::string& scene_json, const std::string&
     live_.emplace(record.id, job);
     wake_.notify_one();
     spdlog::info("job {} queued ({} waiting)", record.id, queue_.size());
-    return {SubmitOutcome::Kind::accepted, std::move(record)};
+    return {SubmitOutcome::Kind::accepted, std::move(record), {}};
 }
 
 std::optional<JobRecord> JobQueue::find(const std::string& id) const {
@@ -155,6 +171,11 @@ std::optional<JobRecord> JobQueue::find(const std::string& id) const {
             if (it != live_.end()) job = it->second;
         }
         if (job) return job->copy();
+    }
+    {
+        const std::lock_guard lock(mutex_);
+        const auto it = unstored_.find(id);
+        if (it != unstored_.end()) return it->second;
     }
     return store_.find(id, false);
 }
@@ -193,19 +214,23 @@ std::optional<JobRecord> JobQueue::cancel(const std::string& id) {
             const std::shared_ptr<LiveJob> job = it->second;
             const auto queued = std::find(queue_.begin(), queue_.end(), job);
             if (queued != queue_.end()) {
-                // Never started: cancelled at once, with no result.
+                // Never started: cancelled at once, with no result; stored first, so that a
+                // store that refuses it leaves the job queued.
+                const std::lock_guard job_lock(job->mutex);
+                const UnixMillis finished = now_millis();
+                store_.finish(id, JobStatus::cancelled, finished, job->record.progress, "",
+                              std::nullopt);
                 queue_.erase(queued);
                 live_.erase(it);
-                const std::lock_guard job_lock(job->mutex);
                 job->record.status = JobStatus::cancelled;
-                job->record.finished = now_millis();
-                store_.finish(id, JobStatus::cancelled, job->record.finished, job->record.progress,
-                              "", std::nullopt);
+                job->record.finished = finished;
                 spdlog::info("job {} queued -> cancelled", id);
                 return job->record;
             }
             // Running: the engine polls the token and returns its best result within a second;
-            // the worker then records the job as cancelled.
+            // the worker then records the job as cancelled. The request is stored first: a
+            // process that dies meanwhile must not run the job again after its restart.
+            store_.request_cancel(id);
             job->user_cancelled = true;
             job->token.cancel();
             spdlog::info("job {} cancel requested", id);
@@ -251,6 +276,8 @@ void JobQueue::write_progress() {
             job->stored_sequence = job->record.progress.sequence;
             changed.emplace_back(id, job->record.progress);
         }
+        std::vector<JobRecord> unstored;
+        for (const auto& [id, record] : unstored_) unstored.push_back(record);
         lock.unlock();  // the store has its own lock; submissions need not wait for the disk
         for (const auto& [id, progress] : changed) {
             try {
@@ -259,7 +286,18 @@ void JobQueue::write_progress() {
                 spdlog::error("job {}: progress not stored: {}", id, e.what());
             }
         }
+        std::vector<std::string> stored;
+        for (const JobRecord& r : unstored) {
+            try {
+                store_.finish(r.id, r.status, r.finished, r.progress, r.error, std::nullopt);
+                stored.push_back(r.id);
+                spdlog::info("job {}: its {} state is stored now", r.id, to_string(r.status));
+            } catch (const std::exception&) {
+                break;  // still refused; the next period tries again
+            }
+        }
         lock.lock();
+        for (const std::string& id : stored) unstored_.erase(id);
     }
 }
 
@@ -276,8 +314,10 @@ void JobQueue::work() {
         try {
             run(job);
         } catch (const std::exception& e) {
-            // A broken store is logged and the job left as it is; the daemon keeps serving.
+            // A store that cannot follow the job fails it where clients see it; the daemon keeps
+            // serving.
             spdlog::error("job {}: {}", job->id, e.what());
+            fail_unstored(*job, e.what());
         }
         const std::lock_guard lock(mutex_);
         live_.erase(job->id);
@@ -307,9 +347,12 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     } else {
         SolveOptions options = options_from(outcome.scene->settings);
         options.threads = options_.solve_threads;
-        // Concurrent solves share the machine: each may use its part of half the memory.
+        // Concurrent solves share the machine: by default each may use its part of half the
+        // memory.
         options.max_memory_bytes =
-            physical_memory_bytes() / (2 * std::max<std::size_t>(1, options_.workers));
+            options_.job_memory_bytes > 0
+                ? options_.job_memory_bytes
+                : physical_memory_bytes() / (2 * std::max<std::size_t>(1, options_.workers));
         options.snapshot_interval_seconds = kSnapshotSeconds;
         if (options_.job_seconds) {
             options.max_seconds = std::min(options.max_seconds.value_or(*options_.job_seconds),
@@ -325,6 +368,11 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     }
     // A solve that converged just as shutdown began is kept; anything cut short runs again.
     if (job->token.cancelled() && !job->user_cancelled && result.status != SolveStatus::converged) {
+        try {
+            store_.release(id);  // not an attempt that killed the process
+        } catch (const StoreError& e) {
+            spdlog::warn("job {}: attempt not released: {}", id, e.what());
+        }
         spdlog::info("job {} interrupted by shutdown; it runs again after restart", id);
         return;
     }
@@ -350,24 +398,64 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
                                   : std::optional<double>(result.stats.error_estimate);
     progress.elapsed_seconds = result.stats.seconds;
     progress.rays = result.stats.rays;
-    const UnixMillis finished = now_millis();
+    JobRecord finished_job;
+    finished_job.id = id;
+    finished_job.status = status;
+    finished_job.finished = now_millis();
+    finished_job.progress = progress;
+    finished_job.error = result.error;
     // The mesh is stored as the final snapshot streamed it, apart from the result text.
     std::optional<StoredMesh> mesh;
     if (final_snapshot && final_snapshot->info().final) {
         mesh = StoredMesh{final_snapshot->info(), encode(final_snapshot->mesh())};
     }
-    store_.finish(id, status, finished, progress, result.error,
-                  proto::result_to_json(result, digits).dump(), mesh);
+    finished_job.warnings = proto::warnings_to_json(result.warnings);
+    store_outcome(*job, finished_job, proto::result_to_json(result, digits).dump(), mesh);
     metrics_.count_solve(result.stats.seconds, result.stats.rays);
-    {
-        const std::lock_guard lock(job->mutex);
-        job->record.status = status;
-        job->record.finished = finished;
-        job->record.progress = progress;
-        job->record.error = result.error;
-    }
-    spdlog::info("job {} running -> {} ({}, {:.2f} s)", id, to_string(status),
+    spdlog::info("job {} running -> {} ({}, {:.2f} s)", id, to_string(job->copy().status),
                  to_string(result.status), result.stats.seconds);
+}
+
+void JobQueue::store_outcome(LiveJob& job, const JobRecord& outcome, const std::string& result_json,
+                             const std::optional<StoredMesh>& mesh) {
+    JobRecord stored = outcome;
+    try {
+        store_.save_warnings(outcome.id, outcome.warnings);
+        store_.finish(outcome.id, outcome.status, outcome.finished, outcome.progress, outcome.error,
+                      result_json, mesh);
+    } catch (const StoreError& e) {
+        // Most often a full disk: the result is lost, and the job says so. The short failed
+        // state may still fit where the result did not.
+        spdlog::error("job {}: result not stored: {}", outcome.id, e.what());
+        stored.status = JobStatus::failed;
+        stored.error = std::string("the result could not be stored: ") + e.what();
+        try {
+            store_.finish(stored.id, stored.status, stored.finished, stored.progress, stored.error,
+                          std::nullopt);
+        } catch (const StoreError&) {
+            fail_unstored(job, e.what());
+            return;
+        }
+    }
+    const std::lock_guard lock(job.mutex);
+    job.record.status = stored.status;
+    job.record.finished = stored.finished;
+    job.record.progress = stored.progress;
+    job.record.error = stored.error;
+    job.record.warnings = stored.warnings;
+}
+
+void JobQueue::fail_unstored(LiveJob& job, const std::string& why) {
+    JobRecord record;
+    {
+        const std::lock_guard lock(job.mutex);
+        job.record.status = JobStatus::failed;
+        job.record.finished = now_millis();
+        job.record.error = "the job store could not record this job: " + why;
+        record = job.record;
+    }
+    const std::lock_guard lock(mutex_);
+    unstored_[record.id] = record;
 }
 
 }  // namespace radiant::server

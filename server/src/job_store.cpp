@@ -1,12 +1,102 @@
 #include "radiant/server/job_store.h"
 
+#include <fcntl.h>
+#include <spdlog/spdlog.h>
 #include <sqlite3.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
 namespace radiant::server {
 namespace {
+
+namespace fs = std::filesystem;
+
+/// Free space, on the disk and under JobStoreOptions::max_bytes, that lets an unwritable store
+/// count as writable again: room for a few results with their meshes.
+constexpr std::size_t kRecoveredFreeBytes = 16u << 20;
+
+/// Errors after which the store takes no writes at all, as opposed to one refused row.
+bool unwritable(int code) {
+    switch (code & 0xff) {
+        case SQLITE_FULL:
+        case SQLITE_IOERR:
+        case SQLITE_READONLY:
+        case SQLITE_CANTOPEN:
+        case SQLITE_CORRUPT:
+        case SQLITE_NOTADB:
+        case SQLITE_PERM:
+        case SQLITE_NOMEM:
+            return true;
+        default:
+            return false;
+    }
+}
+
+[[noreturn]] void throw_store_error(sqlite3* db, const std::string& what) {
+    throw StoreError("job store: " + what, unwritable(sqlite3_extended_errcode(db)));
+}
+
+/// The directory 0700 (it holds scenes, which may be confidential); created when missing.
+void make_private_directory(const fs::path& dir) {
+    fs::create_directories(dir);
+    const auto perms = fs::status(dir).permissions();
+    if ((perms & (fs::perms::group_all | fs::perms::others_all)) == fs::perms::none) return;
+    std::error_code ec;
+    fs::permissions(dir, fs::perms::owner_all, fs::perm_options::replace, ec);
+    if (ec) spdlog::warn("cannot make {} private (0700): {}", dir.string(), ec.message());
+}
+
+/// Creates `file` 0600 when missing, and makes it 0600 when it is not; SQLite creates its -wal
+/// and -shm files with the mode of the database.
+void make_private_file(const fs::path& file) {
+    const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+    if (fd < 0) {
+        throw std::runtime_error("cannot open " + file.string() + ": " + std::strerror(errno));
+    }
+    const int changed = ::fchmod(fd, 0600);
+    ::close(fd);
+    if (changed != 0) {
+        throw std::runtime_error("cannot make " + file.string() +
+                                 " private (0600): " + std::strerror(errno));
+    }
+}
+
+/// An exclusive lock on `dir` for as long as the returned descriptor stays open; the file holds
+/// the owner's pid, for the message a second process gets.
+int lock_directory(const fs::path& dir) {
+    const fs::path file = dir / "radiant.lock";
+    make_private_file(file);
+    const int fd = ::open(file.c_str(), O_RDWR | O_CLOEXEC);
+    if (fd < 0) {
+        throw std::runtime_error("cannot open " + file.string() + ": " + std::strerror(errno));
+    }
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        const int error = errno;
+        char pid[32] = {};
+        const ssize_t n = ::pread(fd, pid, sizeof pid - 1, 0);
+        ::close(fd);
+        if (error != EWOULDBLOCK) {
+            throw std::runtime_error("cannot lock " + file.string() + ": " + std::strerror(error));
+        }
+        const std::string holder = n > 0 ? std::string(pid, static_cast<std::size_t>(n)) : "?";
+        throw std::runtime_error("the data directory " + dir.string() +
+                                 " is in use by another radiantd (pid " + holder +
+                                 "); stop it or give this one another --data");
+    }
+    const std::string pid = std::to_string(::getpid());
+    if (::ftruncate(fd, 0) != 0 ||
+        ::pwrite(fd, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size())) {
+        spdlog::warn("cannot write the pid into {}: {}", file.string(), std::strerror(errno));
+    }
+    return fd;
+}
 
 /// RAII prepared statement with 1-based binds; columns are read by index.
 class Statement {
@@ -60,15 +150,13 @@ private:
     void check(int rc) const {
         if (rc != SQLITE_OK) fail();
     }
-    [[noreturn]] void fail() const {
-        throw std::runtime_error(std::string("job store: ") + sqlite3_errmsg(db_));
-    }
+    [[noreturn]] void fail() const { throw_store_error(db_, sqlite3_errmsg(db_)); }
     sqlite3* db_;
     sqlite3_stmt* stmt_ = nullptr;
 };
 
 constexpr const char* kJobColumns =
-    "id, status, scene, idempotency_key, created, started, finished, progress, error";
+    "id, status, scene, idempotency_key, created, started, finished, progress, error, warnings";
 
 JobRecord read_job(const Statement& s) {
     JobRecord job;
@@ -81,6 +169,8 @@ JobRecord read_job(const Statement& s) {
     job.finished = s.integer(6);
     job.progress = progress_from_json(nlohmann::json::parse(s.text(7), nullptr, false));
     job.error = s.text(8);
+    job.warnings = nlohmann::json::parse(s.text(9), nullptr, false);
+    if (!job.warnings.is_array()) job.warnings = nlohmann::json::array();
     return job;
 }
 
@@ -93,19 +183,46 @@ std::string select_jobs(const char* where, bool with_scene = true) {
 
 }  // namespace
 
-JobStore::JobStore(const std::filesystem::path& data_dir) {
-    std::filesystem::create_directories(data_dir);
-    const std::string file = (data_dir / "radiant.db").string();
+JobStore::JobStore(const std::filesystem::path& data_dir, JobStoreOptions options)
+    : data_dir_(data_dir) {
+    make_private_directory(data_dir);
+    lock_fd_ = lock_directory(data_dir);
+    const fs::path file = data_dir / "radiant.db";
+    try {
+        make_private_file(file);
+        for (const char* suffix : {"-wal", "-shm"}) {
+            const fs::path side = file.string() + suffix;
+            if (fs::exists(side)) make_private_file(side);
+        }
+    } catch (...) {
+        ::close(lock_fd_);
+        throw;
+    }
     if (sqlite3_open(file.c_str(), &db_) != SQLITE_OK) {
         const std::string why = db_ ? sqlite3_errmsg(db_) : "out of memory";
         sqlite3_close(db_);
-        throw std::runtime_error("cannot open job store " + file + ": " + why);
+        ::close(lock_fd_);
+        throw std::runtime_error("cannot open job store " + file.string() + ": " + why);
     }
+    try {
+        initialise(options);
+    } catch (...) {
+        sqlite3_close(db_);
+        ::close(lock_fd_);
+        throw;
+    }
+}
+
+void JobStore::initialise(const JobStoreOptions& options) {
     // WAL: readers never wait for the writer; synchronous=NORMAL is durable across process
     // crashes (kill -9), which is what the contract promises; power loss may lose the last commit.
     exec("PRAGMA journal_mode=WAL");
     exec("PRAGMA synchronous=NORMAL");
     exec("PRAGMA foreign_keys=ON");
+    if (options.max_bytes > 0) {
+        const std::size_t pages = std::max<std::size_t>(1, options.max_bytes / page_size());
+        exec(("PRAGMA max_page_count=" + std::to_string(pages)).c_str());
+    }
     // A second process on the same directory waits briefly instead of failing at once.
     sqlite3_busy_timeout(db_, 5000);
     exec(
@@ -119,7 +236,13 @@ JobStore::JobStore(const std::filesystem::path& data_dir) {
         " started INTEGER NOT NULL DEFAULT 0,"
         " finished INTEGER NOT NULL DEFAULT 0,"
         " progress TEXT NOT NULL DEFAULT '{}',"
-        " error TEXT NOT NULL DEFAULT '')");
+        " error TEXT NOT NULL DEFAULT '',"
+        " warnings TEXT NOT NULL DEFAULT '[]')");
+    // Stores written by an older radiantd get the newer columns, with their defaults.
+    add_column_if_missing("jobs", "warnings", "TEXT NOT NULL DEFAULT '[]'");
+    // Solves started; one that never returns (its process died) stays counted.
+    add_column_if_missing("jobs", "attempts", "INTEGER NOT NULL DEFAULT 0");
+    add_column_if_missing("jobs", "cancel_requested", "INTEGER NOT NULL DEFAULT 0");
     exec(
         "CREATE UNIQUE INDEX IF NOT EXISTS jobs_idempotency ON jobs(idempotency_key)"
         " WHERE idempotency_key IS NOT NULL");
@@ -140,30 +263,97 @@ JobStore::JobStore(const std::filesystem::path& data_dir) {
         " mesh BLOB NOT NULL)");
 }
 
-JobStore::~JobStore() { sqlite3_close(db_); }
+JobStore::~JobStore() {
+    sqlite3_close(db_);
+    ::close(lock_fd_);  // releases the directory
+}
+
+void JobStore::add_column_if_missing(const char* table, const char* column,
+                                     const char* definition) const {
+    Statement info(db_, (std::string("PRAGMA table_info(") + table + ")").c_str());
+    while (info.step()) {
+        if (info.text(1) == column) return;
+    }
+    exec(
+        (std::string("ALTER TABLE ") + table + " ADD COLUMN " + column + " " + definition).c_str());
+}
 
 void JobStore::exec(const char* sql) const {
     char* message = nullptr;
     if (sqlite3_exec(db_, sql, nullptr, nullptr, &message) != SQLITE_OK) {
         std::string why = message ? message : "unknown error";
         sqlite3_free(message);
-        throw std::runtime_error("job store: " + why);
+        throw_store_error(db_, why);
     }
+}
+
+std::size_t JobStore::page_size() const {
+    Statement s(db_, "PRAGMA page_size");
+    return s.step() ? static_cast<std::size_t>(std::max<std::int64_t>(s.integer(0), 512)) : 4096;
+}
+
+template <typename Write>
+void JobStore::write(Write&& write, bool adds_rows) {
+    try {
+        write();
+        // Only a write that needed room proves there is room again: a row changed in place
+        // fits even where no result would.
+        if (adds_rows) write_error_.clear();
+    } catch (const StoreError& e) {
+        if (e.unwritable()) write_error_ = e.what();
+        throw;
+    }
+}
+
+std::size_t JobStore::free_bytes() const {
+    struct statvfs disk {};
+    std::size_t free = ::statvfs(data_dir_.c_str(), &disk) == 0
+                           ? static_cast<std::size_t>(disk.f_bavail) * disk.f_frsize
+                           : 0;
+    auto pragma = [this](const char* sql) {
+        Statement s(db_, sql);
+        return s.step() ? static_cast<std::size_t>(s.integer(0)) : 0;
+    };
+    const std::size_t max_pages = pragma("PRAGMA max_page_count");
+    const std::size_t used_pages = pragma("PRAGMA page_count") - pragma("PRAGMA freelist_count");
+    if (max_pages > used_pages) {
+        free = std::min(free, (max_pages - used_pages) * page_size());
+    } else {
+        free = 0;
+    }
+    return free;
+}
+
+StoreHealth JobStore::health() {
+    const std::lock_guard lock(mutex_);
+    if (write_error_.empty()) return {};
+    // Nothing may write for a while (a balancer stops sending jobs to an unhealthy daemon), so
+    // room for new results counts as recovery too.
+    const std::size_t free = free_bytes();
+    if (free >= kRecoveredFreeBytes) {
+        write_error_.clear();
+        return {};
+    }
+    return {false, write_error_ + " (" + std::to_string(free / 1024) + " KiB free)"};
 }
 
 void JobStore::insert(const JobRecord& job) {
     const std::lock_guard lock(mutex_);
-    Statement s(db_,
-                "INSERT INTO jobs (id, status, scene, idempotency_key, created, progress)"
-                " VALUES (?, ?, ?, ?, ?, ?)");
-    s.bind(1, job.id).bind(2, std::string(to_string(job.status))).bind(3, job.scene_json);
-    if (job.idempotency_key.empty()) {
-        s.bind_null(4);
-    } else {
-        s.bind(4, job.idempotency_key);
-    }
-    s.bind(5, job.created).bind(6, progress_to_json(job.progress).dump());
-    s.step();
+    write(
+        [&] {
+            Statement s(db_,
+                        "INSERT INTO jobs (id, status, scene, idempotency_key, created, progress)"
+                        " VALUES (?, ?, ?, ?, ?, ?)");
+            s.bind(1, job.id).bind(2, std::string(to_string(job.status))).bind(3, job.scene_json);
+            if (job.idempotency_key.empty()) {
+                s.bind_null(4);
+            } else {
+                s.bind(4, job.idempotency_key);
+            }
+            s.bind(5, job.created).bind(6, progress_to_json(job.progress).dump());
+            s.step();
+        },
+        true);
 }
 
 std::optional<JobRecord> JobStore::find(const std::string& id, bool with_scene) const {
@@ -200,17 +390,64 @@ std::vector<JobRecord> JobStore::list(std::size_t limit, const std::string& afte
 
 void JobStore::mark_running(const std::string& id, UnixMillis started) {
     const std::lock_guard lock(mutex_);
-    Statement s(db_, "UPDATE jobs SET status = 'running', started = ? WHERE id = ?");
-    s.bind(1, started).bind(2, id);
-    s.step();
+    write(
+        [&] {
+            Statement s(db_,
+                        "UPDATE jobs SET status = 'running', started = ?, attempts = attempts + 1"
+                        " WHERE id = ?");
+            s.bind(1, started).bind(2, id);
+            s.step();
+        },
+        false);
+}
+
+void JobStore::release(const std::string& id) {
+    const std::lock_guard lock(mutex_);
+    write(
+        [&] {
+            Statement s(db_,
+                        "UPDATE jobs SET status = 'queued', started = 0,"
+                        " attempts = MAX(attempts - 1, 0) WHERE id = ? AND status = 'running'");
+            s.bind(1, id);
+            s.step();
+        },
+        false);
+}
+
+void JobStore::request_cancel(const std::string& id) {
+    const std::lock_guard lock(mutex_);
+    write(
+        [&] {
+            Statement s(db_,
+                        "UPDATE jobs SET cancel_requested = 1"
+                        " WHERE id = ? AND status IN ('queued', 'running')");
+            s.bind(1, id);
+            s.step();
+        },
+        false);
 }
 
 void JobStore::save_progress(const std::string& id, const JobProgress& progress) {
     const std::lock_guard lock(mutex_);
-    // A late write must not replace the final progress of a job that has just finished.
-    Statement s(db_, "UPDATE jobs SET progress = ? WHERE id = ? AND status = 'running'");
-    s.bind(1, progress_to_json(progress).dump()).bind(2, id);
-    s.step();
+    write(
+        [&] {
+            // A late write must not replace the final progress of a job that has just finished.
+            Statement s(db_, "UPDATE jobs SET progress = ? WHERE id = ? AND status = 'running'");
+            s.bind(1, progress_to_json(progress).dump()).bind(2, id);
+            s.step();
+        },
+        false);
+}
+
+void JobStore::save_warnings(const std::string& id, const nlohmann::json& warnings) {
+    const std::lock_guard lock(mutex_);
+    write(
+        [&] {
+            Statement s(db_, "UPDATE jobs SET warnings = ? WHERE id = ?");
+            s.bind(1, warnings.dump()).bind(2, id);
+            s.step();
+        },
+        false);
 }
 
 void JobStore::finish(const std::string& id, JobStatus status, UnixMillis finished,
@@ -218,6 +455,14 @@ void JobStore::finish(const std::string& id, JobStatus status, UnixMillis finish
                       const std::optional<std::string>& result_json,
                       const std::optional<StoredMesh>& mesh) {
     const std::lock_guard lock(mutex_);
+    write([&] { finish_locked(id, status, finished, progress, error, result_json, mesh); },
+          result_json.has_value());
+}
+
+void JobStore::finish_locked(const std::string& id, JobStatus status, UnixMillis finished,
+                             const JobProgress& progress, const std::string& error,
+                             const std::optional<std::string>& result_json,
+                             const std::optional<StoredMesh>& mesh) {
     exec("BEGIN IMMEDIATE");
     try {
         Statement s(db_,
@@ -281,19 +526,55 @@ std::optional<StoredMesh> JobStore::mesh(const std::string& id) const {
     return mesh;
 }
 
-std::vector<std::string> JobStore::requeue_unfinished() {
+UnfinishedJobs JobStore::requeue_unfinished(int max_attempts) {
     const std::lock_guard lock(mutex_);
-    // Event ids continue far above any the stopped run can have sent (it stored its sequence at
-    // least once a second and sends a few dozen ids a second), so a client resuming with an old
-    // Last-Event-ID still gets the new run's events.
-    exec(
-        "UPDATE jobs SET status = 'queued', started = 0, progress = json_object('sequence',"
-        " COALESCE(json_extract(progress, '$.sequence'), 0) + 1000000)"
-        " WHERE status IN ('queued', 'running')");
-    Statement s(db_, "SELECT id FROM jobs WHERE status = 'queued' ORDER BY seq");
-    std::vector<std::string> ids;
-    while (s.step()) ids.push_back(s.text(0));
-    return ids;
+    UnfinishedJobs out;
+    auto ids = [this](const char* where) {
+        Statement s(db_,
+                    (std::string("SELECT id FROM jobs WHERE ") + where + " ORDER BY seq").c_str());
+        std::vector<std::string> found;
+        while (s.step()) found.push_back(s.text(0));
+        return found;
+    };
+    write(
+        [&] {
+            exec("BEGIN IMMEDIATE");
+            try {
+                const UnixMillis now = now_millis();
+                out.cancelled = ids("status IN ('queued', 'running') AND cancel_requested = 1");
+                Statement cancel(db_,
+                                 "UPDATE jobs SET status = 'cancelled', finished = ?"
+                                 " WHERE status IN ('queued', 'running') AND cancel_requested = 1");
+                cancel.bind(1, now);
+                cancel.step();
+                const std::string killed =
+                    "status = 'running' AND attempts >= " + std::to_string(max_attempts);
+                out.failed = ids(killed.c_str());
+                Statement fail(
+                    db_,
+                    ("UPDATE jobs SET status = 'failed', finished = ?, error = ? WHERE " + killed)
+                        .c_str());
+                fail.bind(1, now).bind(
+                    2, "its solve was started " + std::to_string(max_attempts) +
+                           " times and each time the process died before it finished (killed, "
+                           "most likely for running out of memory); it is not run again");
+                fail.step();
+                // Event ids continue far above any the stopped run can have sent (it stored its
+                // sequence at least once a second and sends a few dozen ids a second), so a client
+                // resuming with an old Last-Event-ID still gets the new run's events.
+                exec(
+                    "UPDATE jobs SET status = 'queued', started = 0, progress = json_object("
+                    "'sequence', COALESCE(json_extract(progress, '$.sequence'), 0) + 1000000)"
+                    " WHERE status IN ('queued', 'running')");
+                out.requeued = ids("status = 'queued'");
+                exec("COMMIT");
+            } catch (...) {
+                sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+                throw;
+            }
+        },
+        false);
+    return out;
 }
 
 std::map<JobStatus, std::size_t> JobStore::count_by_status() const {

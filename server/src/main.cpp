@@ -5,13 +5,16 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
+#include <boost/asio/thread_pool.hpp>
 
 #include "radiant/server/blocking_pool.h"
 #include "radiant/server/config.h"
@@ -21,10 +24,13 @@
 #include "radiant/server/listener.h"
 #include "radiant/server/metrics.h"
 #include "radiant/server/router.h"
+#include "radiant/server/static_files.h"
+#include "radiant/solve.h"
 
 namespace {
 
 namespace net = boost::asio;
+namespace fs = std::filesystem;
 using namespace radiant::server;
 
 /// Pictures and CSV files of stored results are drawn one at a time beside the solves (each
@@ -32,24 +38,54 @@ using namespace radiant::server;
 constexpr std::size_t kDrawingThreads = 1;
 constexpr std::size_t kMostWaitingDrawings = 16;
 
+std::size_t mebibytes(double mb) { return static_cast<std::size_t>(mb * 1024 * 1024); }
+
 int serve(const ServerConfig& config) {
     const auto listen = parse_listen(config.listen);
     if (!listen) {
         spdlog::error("--listen must be ADDR:PORT, not \"{}\"", config.listen);
         return 2;
     }
-    JobStore store(config.data_dir);
+    std::string token;
+    if (!config.token_file.empty()) {
+        try {
+            token = read_token_file(config.token_file);
+        } catch (const std::exception& e) {
+            spdlog::error("--token-file: {}", e.what());
+            return 2;
+        }
+    }
+    JobStoreOptions store_options;
+    store_options.max_bytes = mebibytes(config.max_store_mb);
+    JobStore store(config.data_dir, store_options);
     Metrics metrics;
     JobQueueOptions queue_options;
     queue_options.workers = config.workers;
     queue_options.queue_limit = config.queue_limit;
     queue_options.job_seconds = config.job_seconds;
+    queue_options.job_memory_bytes = config.job_memory_mb > 0
+                                         ? mebibytes(config.job_memory_mb)
+                                         : radiant::physical_memory_bytes() / (2 * config.workers);
     JobQueue jobs(store, metrics, queue_options);
     ServiceContext ctx{jobs, store, metrics, config.max_body_bytes};
-    Router router(ctx);
+    ctx.access.allowed_hosts = config.allowed_hosts;
+    ctx.access.cors_origins = config.cors_origins;
+    ctx.access.token = token;
+    ctx.listen_host = listen->host;
+    StaticFiles web(config.web_root.empty() ? default_web_root(fs::read_symlink("/proc/self/exe"))
+                                            : fs::path(config.web_root));
+    if (web.installed()) {
+        spdlog::info("web viewer from {}", web.root().string());
+    } else {
+        spdlog::warn("no web viewer in {} (no index.html): GET / answers 404", web.root().string());
+    }
+    Router router(ctx, std::move(web));
 
     net::io_context ioc(static_cast<int>(config.io_threads));
-    // After ioc, so that it stops first: its waiting tasks hold sessions of ioc's sockets.
+    // After the io_context, so that they are joined and destroyed first: their tasks hold
+    // sessions.
+    net::thread_pool scene_pool(config.scene_threads);
+    ctx.scene_pool = &scene_pool;
     BlockingPool drawing(kDrawingThreads, kMostWaitingDrawings);
     ctx.blocking = &drawing;
     SessionLimits limits;
@@ -61,8 +97,12 @@ int serve(const ServerConfig& config) {
     std::printf("listening on %s:%u\n", bound.address().to_string().c_str(),
                 static_cast<unsigned>(bound.port()));
     std::fflush(stdout);
-    spdlog::info("radiantd listening on {}:{}, data in {}, {} worker(s)",
-                 bound.address().to_string(), bound.port(), config.data_dir, config.workers);
+    spdlog::info(
+        "radiantd listening on {}:{}, data in {}, {} worker(s), each job up to {:.0f} s "
+        "and {} MiB{}",
+        bound.address().to_string(), bound.port(), config.data_dir, config.workers,
+        config.job_seconds, queue_options.job_memory_bytes >> 20,
+        ctx.access.token.empty() ? "" : ", bearer token required");
     listener->run();
 
     net::signal_set signals(ioc, SIGINT, SIGTERM);
@@ -79,6 +119,8 @@ int serve(const ServerConfig& config) {
     for (std::size_t i = 1; i < config.io_threads; ++i) threads.emplace_back([&ioc] { ioc.run(); });
     ioc.run();
     for (std::thread& t : threads) t.join();
+    // Parses still queued finish; the queue is shut, so they answer 503 to nobody.
+    scene_pool.join();
     jobs.shutdown();
     spdlog::info("radiantd stopped");
     return 0;
@@ -111,7 +153,34 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--job-seconds", config.job_seconds, "wall-clock cap on each solve")
         ->envname("RADIANT_JOB_SECONDS")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    app.add_option("--job-memory-mb", config.job_memory_mb,
+                   "memory budget of each solve in MiB (default: half the physical memory "
+                   "divided among the workers)")
+        ->envname("RADIANT_JOB_MEMORY_MB")
         ->check(CLI::PositiveNumber);
+    app.add_option("--max-store-mb", config.max_store_mb,
+                   "size cap of the job store in MiB (default: the disk's)")
+        ->envname("RADIANT_MAX_STORE_MB")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--token-file", config.token_file,
+                   "file holding a bearer token required on every route but /healthz")
+        ->envname("RADIANT_TOKEN_FILE");
+    app.add_option("--allow-host", config.allowed_hosts,
+                   "a Host name answered besides localhost and the listen address (repeatable; "
+                   "* for any)")
+        ->envname("RADIANT_ALLOW_HOST")
+        ->delimiter(',');
+    app.add_option("--cors-origin", config.cors_origins,
+                   "a browser origin allowed cross-origin access, e.g. https://app.example.com "
+                   "(repeatable)")
+        ->envname("RADIANT_CORS_ORIGIN")
+        ->delimiter(',');
+    app.add_option("--web-root", config.web_root,
+                   "the web viewer's files, served at / (default: ../share/radiant/web from the "
+                   "binary)")
+        ->envname("RADIANT_WEB_ROOT");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

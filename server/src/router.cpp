@@ -25,29 +25,6 @@ std::vector<std::string_view> split_path(std::string_view path) {
     return parts;
 }
 
-int hex_value(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-}
-
-std::string percent_decode(std::string_view text) {
-    std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        if (text[i] == '+') {
-            out += ' ';
-        } else if (text[i] == '%' && i + 2 < text.size() && hex_value(text[i + 1]) >= 0 &&
-                   hex_value(text[i + 2]) >= 0) {
-            out += static_cast<char>(hex_value(text[i + 1]) * 16 + hex_value(text[i + 2]));
-            i += 2;
-        } else {
-            out += text[i];
-        }
-    }
-    return out;
-}
-
 Response method_not_allowed(const Request& request, const char* allow) {
     Response response =
         error_response(request, http::status::method_not_allowed, "method_not_allowed",
@@ -73,8 +50,9 @@ Query parse_query(std::string_view query) {
         const std::string_view pair = query.substr(0, amp);
         const std::size_t eq = pair.find('=');
         if (!pair.empty()) {
-            out[percent_decode(pair.substr(0, eq))] =
-                eq == std::string_view::npos ? std::string() : percent_decode(pair.substr(eq + 1));
+            out[percent_decode(pair.substr(0, eq), true)] =
+                eq == std::string_view::npos ? std::string()
+                                             : percent_decode(pair.substr(eq + 1), true);
         }
         if (amp == std::string_view::npos) break;
         query.remove_prefix(amp + 1);
@@ -82,17 +60,30 @@ Query parse_query(std::string_view query) {
     return out;
 }
 
+bool Router::parses_scene(const Request& request) {
+    const std::string_view path = to_std(request.target()).substr(0, request.target().find('?'));
+    return request.method() == http::verb::post || path.ends_with("/result.glb");
+}
+
 RouteResult Router::route(const Request& request) {
     try {
+        if (auto refused = check_access(ctx_.access, ctx_.listen_host, request)) {
+            return {std::move(*refused), std::nullopt};
+        }
         RouteResult routed = dispatch(request);
+        add_cors_headers(ctx_.access, request, routed.response);
         if (routed.deferred) {
-            // Deferred work runs later, on another thread: it gets the same boundary.
-            routed.deferred = [work = std::move(routed.deferred), request]() -> Response {
+            // Deferred work runs later, on another thread: it gets the same boundary and headers.
+            routed.deferred = [work = std::move(routed.deferred), request,
+                               &access = ctx_.access]() -> Response {
+                Response response;
                 try {
-                    return work();
+                    response = work();
                 } catch (const std::exception& e) {
-                    return internal_error(request, e);
+                    response = internal_error(request, e);
                 }
+                add_cors_headers(access, request, response);
+                return response;
             };
         }
         return routed;
@@ -119,11 +110,18 @@ RouteResult Router::dispatch(const Request& request) {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
         return {handlers::metrics(ctx_, request), std::nullopt};
     }
-    if (parts.size() == 2 && parts[0] == "v1" && parts[1] == "openapi.yaml") {
+    if (parts.empty() || parts[0] != "v1") {
+        // Everything outside the API is the web viewer's.
+        if (!get && method != http::verb::head) {
+            return {method_not_allowed(request, "GET, HEAD"), std::nullopt};
+        }
+        return {web_.serve(request, path), std::nullopt};
+    }
+    if (parts.size() == 2 && parts[1] == "openapi.yaml") {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
         return {handlers::openapi(request), std::nullopt};
     }
-    if (parts.size() < 2 || parts[0] != "v1" || parts[1] != "jobs") {
+    if (parts.size() < 2 || parts[1] != "jobs") {
         return {handlers::not_found(request), std::nullopt};
     }
     if (parts.size() == 2) {

@@ -7,6 +7,7 @@
 
 #include <boost/asio/dispatch.hpp>
 #include <boost/asio/post.hpp>
+#include <boost/asio/thread_pool.hpp>
 #include <boost/asio/write.hpp>
 
 namespace radiant::server {
@@ -99,8 +100,22 @@ void Session::on_read(beast::error_code ec) {
         }
         return;
     }
-    Request request = parser_->release();
-    RouteResult routed = router_.route(request);
+    auto request = std::make_shared<Request>(parser_->release());
+    boost::asio::thread_pool* pool = router_.context().scene_pool;
+    if (pool && Router::parses_scene(*request)) {
+        // A scene takes time in proportion to its size to parse: off the I/O threads, so that
+        // every other connection (/healthz included) keeps being answered; back on this strand.
+        net::post(*pool, [self = shared_from_this(), request] {
+            auto routed = std::make_shared<RouteResult>(self->router_.route(*request));
+            net::post(self->stream_.get_executor(),
+                      [self, routed, request] { self->deliver(std::move(*routed), *request); });
+        });
+        return;
+    }
+    deliver(router_.route(*request), *request);
+}
+
+void Session::deliver(RouteResult routed, const Request& request) {
     if (routed.events) return start_events(std::move(routed.response), *routed.events);
     if (routed.deferred) return run_deferred(std::move(routed.deferred), request);
     send(std::move(routed.response));

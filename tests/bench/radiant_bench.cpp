@@ -234,14 +234,16 @@ int main(int argc, char** argv) {
     app.add_option("--tolerance", tolerances, "tolerances to run (repeat or comma-separate)")
         ->delimiter(',')
         ->capture_default_str();
-    app.add_option("--scenes", only_scenes,
-                   "scenes: names from expected.json, furnace-rho0.99, furnace-rho0.999, "
-                   "room-s2, office-x1 … office-x64, furnished-office, furnished-office-ies, "
-                   "furnished-floor-x4, -x16, -x64, the groups validation (all exact scenes and "
-                   "room-s2), scaling (the box offices), clutter (the two furnished offices) and "
-                   "clutter-scaling (furnished-office and the floors), or scene files (a path or "
-                   "NAME.json: its first sensor set against the reference); default: validation "
-                   "and scaling")
+    app.add_option(
+           "--scenes", only_scenes,
+           "scenes: names from expected.json, furnace-rho0.99, furnace-rho0.999, "
+           "room-s2, office-x1 … office-x64, furnished-office, furnished-office-ies, "
+           "furnished-floor-x4, -x16, -x64, the groups validation (all exact scenes and "
+           "room-s2), scaling (the box offices), clutter (the two furnished offices) and "
+           "clutter-scaling (furnished-office and the floors), or scene files (a path or "
+           "NAME.json: its first sensor set against NAME.reference.csv beside it, else against the "
+           "reference solve); default: validation "
+           "and scaling")
         ->delimiter(',');
     app.add_option("--max-seconds", max_seconds, "time cap of each case")->capture_default_str();
     app.add_option("--method-seconds", method_seconds,
@@ -270,7 +272,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--data", data_dir, "test data directory (tests/data)")->capture_default_str();
     app.add_option("--threads", threads, "worker threads (0: all cores); also rtrace's -n");
-        app.add_option("--export", export_dir,
+    app.add_option("--export", export_dir,
                    "write each of --scenes as DIR/NAME.json (radiant-scene/1) and solve nothing");
     app.add_option("--downlight", downlight, "IES file of furnished-office-ies")
         ->capture_default_str();
@@ -414,7 +416,25 @@ int main(int argc, char** argv) {
         BenchScene bench;
         if (const auto file = scene_files.find(name); file != scene_files.end()) {
             bench.scene = file->second;
-            bench.needs_reference = true;
+            // A RADIANCE reference beside the file (--radiance-reference writes one) is
+            // independent of Radiant, so it is preferred to a reference solve.
+            const fs::path beside = fs::path(name).replace_extension(".reference.csv");
+            if (!fs::exists(beside)) {
+                bench.needs_reference = true;
+            } else {
+                const SensorSet& first = bench.scene.sensors.at(0);
+                bench.reference = {"RADIANCE (" + beside.filename().string() + ")", nullptr,
+                                   first.name, read_radiance_csv(beside)};
+                if (bench.reference.illuminance.size() != first.points.size()) {
+                    std::cerr << "radiant-bench: " << beside.string() << " has "
+                              << bench.reference.illuminance.size() << " values, but sensor set \""
+                              << first.name << "\" of " << name << " has " << first.points.size()
+                              << " points\n";
+                    return std::nullopt;
+                }
+                std::cerr << "radiant-bench: reference of " << bench.scene.name << ": "
+                          << bench.reference.source << ", " << first.points.size() << " points\n";
+            }
         } else if (name == kRadianceRoom) {
             const auto scene = load(data / "radiance" / "room-s2.json");
             if (!scene) return std::nullopt;

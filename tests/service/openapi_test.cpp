@@ -127,6 +127,21 @@ TEST(OpenApi, EveryAnswerMatchesTheSpec) {
     // The queue holds one job: let this one finish before filling it on purpose below.
     ASSERT_EQ(wait_for(d.port(), json::parse(keyed.body)["id"], "done"), "done");
 
+    // A job with warnings, and a strict scene refused for them.
+    const std::string dark_room =
+        R"({"format": "radiant-scene/1", "materials": {"w": {"reflectance": 0.5}},
+            "surfaces": [{"name": "room", "material": "w",
+                          "box": {"min": [0,0,0], "max": [1,1,1]}}],
+            "settings": {"method": "direct", "tolerance": 0.1)";
+    const Reply dark = rec.call(verb::post, jobs, jobs, dark_room + "}}");
+    ASSERT_EQ(dark.status, 202u);
+    const std::string warned = json::parse(dark.body)["id"];
+    ASSERT_EQ(wait_for(d.port(), warned, "done"), "done");
+    EXPECT_EQ(json::parse(rec.call(verb::get, job, jobs + "/" + warned).body)["warnings"].size(),
+              1u);
+    EXPECT_EQ(rec.call(verb::get, result, jobs + "/" + warned + "/result").status, 200u);
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, dark_room + R"(, "strict": true}})").status, 400u);
+
     // A running job, one queued behind it, and a full queue.
     const std::string running =
         json::parse(rec.call(verb::post, jobs, jobs, radiant::test::slow_room()).body)["id"];
@@ -157,6 +172,16 @@ TEST(OpenApi, EveryAnswerMatchesTheSpec) {
         rec.call(verb::post, jobs, jobs, R"({"format": "radiant-scene/1", "surfaces": []})").status,
         400u);
     EXPECT_EQ(rec.call(verb::post, jobs, jobs, std::string(100001, ' ')).status, 413u);
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, std::string(1000, '[')).status, 413u);
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, radiant::test::tiny_room(),
+                       {{"Content-Type", "text/plain"}})
+                  .status,
+              415u);
+    EXPECT_EQ(rec.call(verb::get, jobs, jobs, "", {{"Host", "evil.example"}}).status, 403u);
+    EXPECT_EQ(rec.call(verb::post, jobs, jobs, radiant::test::tiny_room(),
+                       {{"Origin", "https://evil.example"}})
+                  .status,
+              403u);
     EXPECT_EQ(rec.call(verb::get, jobs, jobs + "?limit=0").status, 400u);
     const std::string unknown = "/v1/jobs/00000000000000000000000000000000";
     EXPECT_EQ(rec.call(verb::get, job, unknown).status, 404u);
@@ -166,6 +191,10 @@ TEST(OpenApi, EveryAnswerMatchesTheSpec) {
     EXPECT_EQ(rec.call(verb::get, events, unknown + "/events").status, 404u);
     EXPECT_EQ(rec.call(verb::get, "/healthz", "/healthz").status, 200u);
     EXPECT_EQ(rec.call(verb::get, "/metrics", "/metrics").status, 200u);
+    // The viewer (200 when the build made it, else 404) and a file that is not there.
+    const unsigned viewer = rec.call(verb::get, "/", "/").status;
+    EXPECT_TRUE(viewer == 200u || viewer == 404u) << viewer;
+    EXPECT_EQ(rec.call(verb::get, "/{file}", "/no-such-file.js").status, 404u);
 
     // Every kind of event was seen, so each event schema was exercised too.
     for (const char* name : {"progress", "mesh", "radiosity", "done"}) {

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <thread>
 
@@ -50,6 +51,7 @@ public:
                      const std::string& idempotency_key = "") {
         Request request{method, target, 11};
         if (!idempotency_key.empty()) request.set("Idempotency-Key", idempotency_key);
+        if (!body.empty()) request.set(http::field::content_type, "application/json");
         request.body() = body;
         request.prepare_payload();
         return router_->route(request);
@@ -77,6 +79,9 @@ public:
         return job;
     }
 
+    /// `request` as it comes, headers and all.
+    Response send(const Request& request) { return router_->route(request).response; }
+    ServiceContext& context() { return *ctx_; }
     JobQueue& jobs() { return *jobs_; }
     JobStore& store() { return *store_; }
     Metrics& metrics() { return metrics_; }
@@ -422,6 +427,194 @@ TEST(JobQueue, UnfinishedJobsRunAgainAfterRestart) {
         EXPECT_TRUE(store.result(job.id).has_value());
     }
     fs::remove_all(dir);
+}
+
+Request scene_request(const std::string& body, const std::map<std::string, std::string>& headers) {
+    Request request{http::verb::post, "/v1/jobs", 11};
+    for (const auto& [name, value] : headers) request.set(name, value);
+    request.body() = body;
+    request.prepare_payload();
+    return request;
+}
+
+TEST(Router, SceneNeedsTheJsonContentType) {
+    Service s;
+    for (const char* type : {"", "text/plain", "application/x-www-form-urlencoded"}) {
+        std::map<std::string, std::string> headers;
+        if (*type) headers["Content-Type"] = type;
+        const Response r = s.send(scene_request(radiant::test::tiny_room(), headers));
+        EXPECT_EQ(r.result(), http::status::unsupported_media_type) << type;
+        EXPECT_EQ(json::parse(r.body())["error"]["code"], "unsupported_media_type");
+    }
+    EXPECT_EQ(s.store().list(10, "").size(), 0u) << "nothing was queued";
+    const Response ok = s.send(scene_request(
+        radiant::test::tiny_room(), {{"Content-Type", "Application/JSON; charset=utf-8"}}));
+    EXPECT_EQ(ok.result(), http::status::accepted) << ok.body();
+}
+
+TEST(Router, InvalidUtf8Is400WithAPointerNot500) {
+    Service s;
+    const Response body = s.post("{\"format\": \"radiant-scene/1\", \"name\": \"\xff\xfe\"}");
+    ASSERT_EQ(body.result(), http::status::bad_request) << body.body();
+    const json error = json::parse(body.body())["error"];
+    EXPECT_EQ(error["code"], "invalid_json");
+    EXPECT_EQ(error["pointer"], "/name");
+    const Response path = s.get("/v1/jobs/\xff\xfe");
+    EXPECT_EQ(path.result(), http::status::not_found) << "the id is quoted, not thrown on";
+    EXPECT_TRUE(json::accept(path.body()));
+}
+
+TEST(Router, OverTheJsonBudgetIs413WithAPointer) {
+    Service s({}, 64u << 20);
+    const Response r = s.post(std::string(1'000'000, '['));
+    ASSERT_EQ(r.result(), http::status::payload_too_large) << r.body();
+    const json error = json::parse(r.body())["error"];
+    EXPECT_EQ(error["code"], "too_complex");
+    EXPECT_EQ(error["message"], "nested deeper than 64 levels");
+    EXPECT_FALSE(error["pointer"].get<std::string>().empty());
+}
+
+TEST(Router, TokenIsNeededOnEveryRouteButHealthz) {
+    Service s;
+    s.context().access.token = "s3cret-token";
+    for (const char* target : {"/v1/jobs", "/metrics", "/v1/jobs/x", "/nowhere"}) {
+        const Response r = s.get(target);
+        EXPECT_EQ(r.result(), http::status::unauthorized) << target;
+        EXPECT_EQ(json::parse(r.body())["error"]["code"], "unauthorized");
+        EXPECT_EQ(r[http::field::www_authenticate], "Bearer realm=\"radiantd\"");
+    }
+    EXPECT_EQ(s.get("/healthz").result(), http::status::ok);
+    Request wrong{http::verb::get, "/v1/jobs", 11};
+    wrong.set(http::field::authorization, "Bearer s3cret-tokeN");
+    EXPECT_EQ(s.send(wrong).result(), http::status::unauthorized);
+    const Response refused =
+        s.send(scene_request(radiant::test::tiny_room(), {{"Content-Type", "application/json"},
+                                                          {"Authorization", "Bearer s3cret"}}));
+    EXPECT_EQ(refused.result(), http::status::unauthorized);
+    EXPECT_EQ(s.store().list(10, "").size(), 0u) << "a refused request changes nothing";
+    const Response accepted = s.send(scene_request(
+        radiant::test::tiny_room(),
+        {{"Content-Type", "application/json"}, {"Authorization", "bearer s3cret-token"}}));
+    EXPECT_EQ(accepted.result(), http::status::accepted) << accepted.body();
+}
+
+TEST(Router, ForeignHostsAreRefusedAgainstDnsRebinding) {
+    Service s;
+    Request request{http::verb::get, "/v1/jobs", 11};
+    for (const char* host : {"localhost:8080", "127.0.0.1:8080", "[::1]:8080", "LOCALHOST"}) {
+        request.set(http::field::host, host);
+        EXPECT_EQ(s.send(request).result(), http::status::ok) << host;
+    }
+    for (const char* host : {"evil.example:8080", "127.0.0.1.evil.example", "localhost.evil"}) {
+        request.set(http::field::host, host);
+        const Response r = s.send(request);
+        EXPECT_EQ(r.result(), http::status::forbidden) << host;
+        EXPECT_EQ(json::parse(r.body())["error"]["code"], "host_not_allowed");
+    }
+    request.set(http::field::host, "render-farm:8080");
+    s.context().access.allowed_hosts = {"render-farm"};
+    EXPECT_EQ(s.send(request).result(), http::status::ok);
+    s.context().listen_host = "10.1.2.3";
+    request.set(http::field::host, "10.1.2.3:8080");
+    EXPECT_EQ(s.send(request).result(), http::status::ok) << "the listen address";
+}
+
+TEST(Router, CrossOriginBrowserRequestsNeedAnAllowedOrigin) {
+    Service s;
+    const auto post_from = [&](const char* origin) {
+        return s.send(
+            scene_request(radiant::test::tiny_room(), {{"Content-Type", "application/json"},
+                                                       {"Host", "127.0.0.1:8080"},
+                                                       {"Origin", origin}}));
+    };
+    const Response foreign = post_from("https://evil.example");
+    EXPECT_EQ(foreign.result(), http::status::forbidden);
+    EXPECT_EQ(json::parse(foreign.body())["error"]["code"], "origin_not_allowed");
+    EXPECT_EQ(s.store().list(10, "").size(), 0u);
+    EXPECT_EQ(post_from("http://127.0.0.1:8080").result(), http::status::accepted)
+        << "the page's own origin";
+
+    s.context().access.cors_origins = {"https://app.example"};
+    const Response allowed = post_from("https://app.example");
+    EXPECT_EQ(allowed.result(), http::status::accepted);
+    EXPECT_EQ(allowed[http::field::access_control_allow_origin], "https://app.example");
+    EXPECT_EQ(allowed[http::field::vary], "Origin");
+
+    Request preflight{http::verb::options, "/v1/jobs", 11};
+    preflight.set(http::field::origin, "https://app.example");
+    preflight.set(http::field::access_control_request_method, "POST");
+    const Response answer = s.send(preflight);
+    EXPECT_EQ(answer.result(), http::status::no_content);
+    EXPECT_EQ(answer[http::field::access_control_allow_origin], "https://app.example");
+    EXPECT_NE(answer[http::field::access_control_allow_headers].find("Content-Type"),
+              std::string::npos);
+    preflight.set(http::field::origin, "https://evil.example");
+    EXPECT_EQ(s.send(preflight).result(), http::status::forbidden);
+}
+
+TEST(AccessPolicy, ConstantTimeEqual) {
+    EXPECT_TRUE(constant_time_equal("abc", "abc"));
+    EXPECT_FALSE(constant_time_equal("abc", "abd"));
+    EXPECT_FALSE(constant_time_equal("abc", "abcd"));
+    EXPECT_FALSE(constant_time_equal("", "a"));
+    EXPECT_TRUE(constant_time_equal("", ""));
+}
+
+/// A scene of tests/data/warnings, with `settings` added.
+std::string mistake(const std::string& name, const json& settings = json::object()) {
+    json scene =
+        json::parse(radiant::test::read_text(std::string(RADIANT_TEST_DATA) + "/warnings/" + name));
+    scene["settings"] = settings;
+    return scene.dump();
+}
+
+TEST(Router, StrictSceneWithWarningsIs400WithTheirPointersAndQueuesNothing) {
+    Service s;
+    const Response r = s.post(mistake("luminaire-above-ceiling.json", {{"strict", true}}));
+    ASSERT_EQ(r.result(), http::status::bad_request) << r.body();
+    const json error = json::parse(r.body())["error"];
+    EXPECT_EQ(error["code"], "strict_warnings");
+    EXPECT_EQ(error["pointer"], "/luminaires/0/position");
+    ASSERT_EQ(error["problems"].size(), 1u) << error;
+    EXPECT_TRUE(error["message"].get<std::string>().ends_with(" [luminaire_behind_surface]"))
+        << error;
+    EXPECT_EQ(json::parse(s.get("/v1/jobs").body())["jobs"].size(), 0u);
+    // Without warnings a strict scene is accepted.
+    EXPECT_EQ(s.post(radiant::test::tiny_room(R"({"tolerance": 0.1, "strict": true})")).result(),
+              http::status::accepted);
+}
+
+TEST(Router, JobsAndResultsCarryTheWarnings) {
+    Service s;
+    const std::string warned =
+        id_of(s.post(mistake("ceiling-wound-wrong.json", {{"tolerance", 0.1}})));
+    const std::string clean = id_of(s.post(radiant::test::tiny_room()));
+    const json job = s.wait_for(warned, "done");
+    ASSERT_EQ(job["status"], "done") << job;
+    ASSERT_EQ(job["warnings"].size(), 1u) << job;
+    EXPECT_EQ(job["warnings"][0]["code"], "back_face_light");
+    EXPECT_EQ(job["warnings"][0]["pointer"], "/surfaces/5");
+    const json result = json::parse(s.get("/v1/jobs/" + warned + "/result").body());
+    EXPECT_EQ(result["warnings"], job["warnings"]);
+    EXPECT_EQ(s.wait_for(clean, "done")["warnings"], json::array());
+    // The store keeps them: a listing reads them back from it.
+    const json listed = json::parse(s.get("/v1/jobs").body())["jobs"];
+    const auto stored = std::find_if(listed.begin(), listed.end(),
+                                     [&](const json& j) { return j["id"] == warned; });
+    ASSERT_NE(stored, listed.end()) << listed;
+    EXPECT_EQ((*stored)["warnings"], job["warnings"]);
+}
+
+TEST(Router, AStrictSolveThatEndsWithAWarningFails) {
+    Service s;
+    const std::string id =
+        id_of(s.post(radiant::test::tiny_room(R"({"tolerance": 0.001, "max_seconds": 0.05,
+                                                  "strict": true})")));
+    const json job = s.wait_for(id, "failed");
+    ASSERT_EQ(job["status"], "failed") << job;
+    EXPECT_NE(job["error"].get<std::string>().find("time_limit"), std::string::npos) << job;
+    ASSERT_EQ(job["warnings"].size(), 1u) << job;
+    EXPECT_EQ(job["warnings"][0]["pointer"], "/settings/max_seconds");
 }
 
 TEST(Query, ParsesAndDecodes) {

@@ -1,11 +1,11 @@
 // Runs the built `radiant` binary (cmake --build builds it with the tests) and captures what it
-// printed, for tests of the command line.
+// printed and its peak resident memory, for tests of the command line.
 #pragma once
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -16,6 +16,7 @@ namespace radiant::test {
 struct CliRun {
     int exit_code;
     std::string out, err;
+    double peak_mib = 0;  ///< the process's peak resident set, as the kernel counted it
 };
 
 inline CliRun run_cli(const std::string& args) {
@@ -28,9 +29,17 @@ inline CliRun run_cli(const std::string& args) {
     command.append("/radiant ").append(args);
     command.append(" > '").append((dir / "out").string()).append("'");
     command.append(" 2> '").append((dir / "err").string()).append("'");
-    const int status = std::system(command.c_str());
+    // Forked and waited for here, not by std::system, so that wait4 gives this run's peak.
+    const pid_t pid = fork();
+    if (pid == 0) {
+        execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    int status = 0;
+    rusage usage{};
+    wait4(pid, &status, 0, &usage);
     CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(dir / "out"),
-             read_text(dir / "err")};
+             read_text(dir / "err"), static_cast<double>(usage.ru_maxrss) / 1024};  // KiB
     fs::remove_all(dir);
     return r;
 }

@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -25,8 +26,9 @@ namespace radiant::test {
 class Daemon {
 public:
     /// Runs radiantd --listen 127.0.0.1:0 --data `data` `args`; returns once it printed its port.
+    /// `max_open_files` > 0 lowers its RLIMIT_NOFILE.
     Daemon(const std::filesystem::path& data, const std::vector<std::string>& args,
-           const std::filesystem::path& log) {
+           const std::filesystem::path& log, rlim_t max_open_files = 0) {
         int fds[2];
         if (pipe(fds) != 0) throw std::runtime_error("pipe");
         pid_ = fork();
@@ -35,6 +37,10 @@ public:
             const int log_fd = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
             dup2(log_fd, STDERR_FILENO);
             close(fds[0]);
+            if (max_open_files > 0) {
+                const rlimit limit{max_open_files, max_open_files};
+                if (setrlimit(RLIMIT_NOFILE, &limit) != 0) _exit(126);
+            }
             std::vector<std::string> all = {std::string(RADIANT_BIN_DIR) + "/radiantd", "--listen",
                                             "127.0.0.1:0", "--data", data.string()};
             all.insert(all.end(), args.begin(), args.end());
@@ -55,7 +61,17 @@ public:
             line.append(c, static_cast<std::size_t>(n));
         }
         const std::string prefix = "listening on 127.0.0.1:";
-        if (line.rfind(prefix, 0) != 0) throw std::runtime_error("radiantd said: " + line);
+        if (line.rfind(prefix, 0) != 0) {
+            // It stopped before listening (or never said so): reap it, with how it ended.
+            kill(pid_, SIGKILL);
+            int status = 0;
+            waitpid(pid_, &status, 0);
+            close(out_);
+            throw std::runtime_error("radiantd said: " + line +
+                                     (WIFEXITED(status)
+                                          ? "; exit code " + std::to_string(WEXITSTATUS(status))
+                                          : std::string("; killed")));
+        }
         port_ = static_cast<unsigned short>(std::stoi(line.substr(prefix.size())));
     }
     ~Daemon() {
@@ -69,6 +85,7 @@ public:
     Daemon& operator=(const Daemon&) = delete;
 
     unsigned short port() const { return port_; }
+    pid_t pid() const { return pid_; }
 
     /// Sends `signal` and returns the exit status (-1 when killed by a signal).
     int stop(int signal) {
@@ -92,6 +109,7 @@ struct Reply {
 };
 
 /// One request on a fresh connection; reads the whole answer (event streams until they close).
+/// A body goes as application/json unless `headers` name another Content-Type.
 inline Reply http_call(unsigned short port, boost::beast::http::verb method,
                        const std::string& target, const std::string& body = "",
                        const std::map<std::string, std::string>& headers = {}) {
@@ -102,6 +120,8 @@ inline Reply http_call(unsigned short port, boost::beast::http::verb method,
     socket.connect({boost::asio::ip::make_address("127.0.0.1"), port});
     http::request<http::string_body> request{method, target, 11};
     request.set(http::field::host, "127.0.0.1");
+    // As every client sends a scene; a test of other types says so in `headers`.
+    if (!body.empty()) request.set(http::field::content_type, "application/json");
     for (const auto& [name, value] : headers) request.set(name, value);
     request.body() = body;
     request.prepare_payload();

@@ -31,6 +31,39 @@ inline int add_accessor(tinygltf::Model& model, std::size_t offset, std::size_t 
     return static_cast<int>(model.accessors.size() - 1);
 }
 
+/// Standard base64 with padding, as a scene's "gltf" key holds a .glb.
+inline std::string base64(const std::string& bytes) {
+    static const char* alphabet =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    std::size_t k = 0;
+    for (; k + 2 < bytes.size(); k += 3) {
+        const auto b = [&](std::size_t i) { return static_cast<unsigned char>(bytes[k + i]); };
+        const unsigned v = (b(0) << 16) | (b(1) << 8) | b(2);
+        for (int shift = 18; shift >= 0; shift -= 6) out += alphabet[(v >> shift) & 63];
+    }
+    if (k < bytes.size()) {
+        unsigned v = static_cast<unsigned char>(bytes[k]) << 16;
+        if (k + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[k + 1]) << 8;
+        out += alphabet[(v >> 18) & 63];
+        out += alphabet[(v >> 12) & 63];
+        out += k + 1 < bytes.size() ? alphabet[(v >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+inline std::string glb_of(tinygltf::Model& model) {
+    model.defaultScene = 0;
+    model.asset.version = "2.0";
+    std::ostringstream out;
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToStream(&model, out, false, true)) {
+        ADD_FAILURE() << "tinygltf could not write the test model";
+    }
+    return out.str();
+}
+
 /// The .glb bytes. `positions`: x, y, z per vertex in glTF axes (y up, metres); `indices` may be
 /// empty (non-indexed); `mode` a TINYGLTF_MODE_*; `node_scale` empty or three factors.
 inline std::string single_primitive_glb(const std::vector<float>& positions,
@@ -74,14 +107,38 @@ inline std::string single_primitive_glb(const std::vector<float>& positions,
     tinygltf::Scene scene;
     scene.nodes.push_back(0);
     model.scenes.push_back(scene);
-    model.defaultScene = 0;
+    return glb_of(model);
+}
+
+/// One triangle's mesh, used by the last of a chain of `depth` nodes (node k's child is node
+/// k + 1) and by `instances` root nodes beside the chain.
+inline std::string node_graph_glb(std::size_t depth, std::size_t instances) {
+    tinygltf::Model model;
     model.asset.version = "2.0";
-    std::ostringstream out;
-    tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToStream(&model, out, false, true)) {
-        ADD_FAILURE() << "tinygltf could not write the test model";
+    const std::string one_triangle =
+        single_primitive_glb({0, 0, 0, 1, 0, 0, 0, 1, 0}, {}, TINYGLTF_MODE_TRIANGLES);
+    tinygltf::TinyGLTF reader;
+    std::string error, warning;
+    reader.LoadBinaryFromMemory(&model, &error, &warning,
+                                reinterpret_cast<const unsigned char*>(one_triangle.data()),
+                                static_cast<unsigned>(one_triangle.size()));
+    model.nodes.clear();
+    model.scenes[0].nodes.clear();
+    for (std::size_t k = 0; k < depth; ++k) {
+        tinygltf::Node node;
+        if (k + 1 < depth) node.children.push_back(static_cast<int>(k + 1));
+        if (k + 1 == depth) node.mesh = 0;
+        model.nodes.push_back(node);
     }
-    return out.str();
+    if (depth > 0) model.scenes[0].nodes.push_back(0);
+    for (std::size_t k = 0; k < instances; ++k) {
+        tinygltf::Node node;
+        node.mesh = 0;
+        node.translation = {static_cast<double>(k), 0, 0};
+        model.scenes[0].nodes.push_back(static_cast<int>(model.nodes.size()));
+        model.nodes.push_back(node);
+    }
+    return glb_of(model);
 }
 
 }  // namespace radiant::test

@@ -1,6 +1,9 @@
 // Runs the built `radiant` binary (cmake --build builds it with the tests) and checks the
 // contract's exit codes and problem lines.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -24,7 +27,7 @@ std::string data(const std::string& relative) {
 }
 
 TEST(Cli, ValidateGoodFile) {
-    const std::string file = data("good/minimal.json");
+    const std::string file = std::string(RADIANT_SOURCE_DIR) + "/proto/examples/simple-room.json";
     const CliRun r = run("validate '" + file + "'");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.out, file + ": ok\n");
@@ -93,6 +96,39 @@ TEST(Cli, ProgressPrintsEverySnapshot) {
     EXPECT_NE(last.find("workplane: "), std::string::npos) << last;
     EXPECT_NE(last.find(" lx (min "), std::string::npos) << last;
     EXPECT_EQ(r.err.find('\r'), std::string::npos) << "lines, not a rewritten progress line";
+}
+
+/// The exit code of `radiant ARGS` run by the shell as it is written (its own redirections).
+int shell_exit_code(const std::string& args) {
+    const int status = std::system((std::string(RADIANT_BIN_DIR) + "/radiant " + args).c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(Cli, SolveRefusesAnOutputThatIsNoRegularFile) {
+    // A pipe stands for /dev/full: renaming the result over it replaced the device with a file.
+    const fs::path fifo =
+        fs::temp_directory_path() / ("radiant_cli_fifo_" + std::to_string(getpid()));
+    fs::remove(fifo);
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    const CliRun r = run("solve '" + data("good/minimal.json") + "' --tolerance 0.1 --out '" +
+                         fifo.string() + "'");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("is not a regular file"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::is_fifo(fifo)) << "left as it was";
+    fs::remove(fifo);
+}
+
+TEST(Cli, AWriteErrorOnStdoutExitsNonZero) {
+    const std::string solve = "solve '" + data("good/minimal.json") + "' --tolerance 0.1";
+    EXPECT_EQ(shell_exit_code(solve + " > /dev/full 2> /dev/null"), 1);
+    EXPECT_EQ(shell_exit_code(solve + " > /dev/null 2> /dev/null"), 0);
+}
+
+TEST(Cli, SubmitReadsNoMoreThanTheServiceTakes) {
+    // Refused before any connection: no service is needed, and /dev/zero never ends.
+    const CliRun r = run("submit /dev/zero --server http://127.0.0.1:9");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("over the limit of 67108864 bytes"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -149,8 +149,8 @@ TEST(MonteCarlo, ReportsItsStages) {
     const Result r = testing::solve_with(panel_room_with_sensors(), "monte-carlo");
     std::vector<std::string> names;
     for (const StageStats& s : r.stats.stages) names.push_back(s.name);
-    EXPECT_EQ(names,
-              (std::vector<std::string>{"prepare", "meshing", "photons", "gather", "estimate"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"prepare", "checks", "meshing", "photons", "gather",
+                                               "estimate"}));
     std::uint64_t rays = 0;
     for (const StageStats& s : r.stats.stages) rays += s.rays;
     EXPECT_EQ(rays, r.stats.rays);

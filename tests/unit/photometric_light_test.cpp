@@ -75,8 +75,10 @@ void expect_direct_light(const Frame& frame, double rotation, const std::vector<
         "floor", "black", testing::rect({-20, -20, -5}, {40, 0, 0}, {0, 40, 0}))};
     scene.luminaires = {photometric(ies_beam(), frame.position, frame.aim, rotation)};
     for (std::size_t k = 0; k < probes.size(); ++k) {
-        scene.sensors.push_back(testing::sensor_points(
-            "p" + std::to_string(k), {frame.toward(probes[k])}, probes[k].normal));
+        // Built with append: GCC 12 reports a false -Wrestrict on "p" + std::to_string(k) here.
+        scene.sensors.push_back(testing::sensor_points(std::string("p").append(std::to_string(k)),
+                                                       {frame.toward(probes[k])},
+                                                       probes[k].normal));
     }
     SolveOptions options;
     options.method = "direct";

@@ -31,13 +31,14 @@ TEST(Snapshots, VersionedWhileSolvingAndFinalEqualsResult) {
         SolveOptions options = options_from(scene.settings);
         options.method = method;
         // The hierarchical estimate of this closed ρ 0.9 room stays near 0.3 % however fine the
-        // links (twice the completions' difference, see hierarchical_pipeline.cpp).
-        options.tolerance = method == "hierarchical" ? 0.005 : 0.001;
+        // links (twice the completions' difference, see hierarchical_pipeline.cpp). Below 0.004
+        // the dense mesh reaches its patch budget, where its error can no longer be measured.
+        options.tolerance = method == "hierarchical" ? 0.005 : 0.004;
         options.snapshot_interval_seconds = 0;  // every chance the solver gives
         options.want_mesh = true;
         SnapshotRecorder recorder;
         const Result r = solve(scene, options, &recorder);
-        ASSERT_EQ(r.status, SolveStatus::converged) << method << " " << r.error;
+        ASSERT_EQ(r.status, SolveStatus::converged) << method << " " << r.error << r.stop_reason;
         ASSERT_FALSE(recorder.snapshots.empty()) << method;
         if (method == "shooting" || method == "jacobi") {
             EXPECT_GE(recorder.snapshots.size(), 2u) << method;

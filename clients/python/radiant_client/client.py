@@ -29,16 +29,21 @@ def _default_url() -> str:
     return os.environ.get("RADIANT_SERVER") or DEFAULT_URL
 
 
+def _default_token() -> Optional[str]:
+    return os.environ.get("RADIANT_TOKEN") or None
+
+
 class _Transport:
     """One HTTP/1.1 connection per request, as the CLI does: a job's calls are few, and a
     fresh connection never finds one the server closed while idle."""
 
-    def __init__(self, url: str, timeout: float):
+    def __init__(self, url: str, timeout: float, token: Optional[str] = None):
         parts = urlsplit(url)
         if parts.scheme not in ("http", "https") or not parts.hostname:
             raise ValueError(f"expected http://HOST[:PORT][/PREFIX], got {url!r}")
         self.url = url.rstrip("/")
         self.timeout = timeout
+        self._token = token
         self._https = parts.scheme == "https"
         self._host = parts.hostname
         self._port = parts.port
@@ -60,6 +65,8 @@ class _Transport:
         """Sends a request; returns the connection and the response with its body unread.
         Raises the :class:`HTTPError` of an error status (the body read then)."""
         all_headers = {"User-Agent": "radiant-python", **(headers or {})}
+        if self._token:
+            all_headers["Authorization"] = f"Bearer {self._token}"
         if body is not None:
             all_headers.setdefault("Content-Type", "application/json")
         connection = self._connection(self.timeout if timeout is None else timeout)
@@ -105,12 +112,14 @@ class Client:
     >>> job.wait(progress=lambda p: print(p["fraction"]))  # doctest: +SKIP
 
     ``url`` defaults to ``$RADIANT_SERVER``, else ``http://127.0.0.1:8080``; ``timeout`` is each
-    request's socket timeout in seconds. A client holds no connection and may be shared by
-    threads.
+    request's socket timeout in seconds; ``token`` (default ``$RADIANT_TOKEN``) is sent as
+    ``Authorization: Bearer`` to a service started with ``--token-file``. A client holds no
+    connection and may be shared by threads.
     """
 
-    def __init__(self, url: Optional[str] = None, timeout: float = 30.0):
-        self._transport = _Transport(url or _default_url(), timeout)
+    def __init__(self, url: Optional[str] = None, timeout: float = 30.0,
+                 token: Optional[str] = None):
+        self._transport = _Transport(url or _default_url(), timeout, token or _default_token())
 
     @property
     def url(self) -> str:

@@ -13,7 +13,7 @@ import time
 import unittest
 from pathlib import Path
 
-from radiant_client import (Client, InvalidSceneError, NotFoundError, QueueFullError,
+from radiant_client import (Client, HTTPError, InvalidSceneError, NotFoundError, QueueFullError,
                             RadiantConnectionError, RadiantTimeout, SceneError, SceneFileError)
 from radiant_client.events import decode_arrays, parse_events
 
@@ -253,6 +253,22 @@ class QueueFull(unittest.TestCase):
             self.assertGreaterEqual(time.monotonic() - started, 4)  # it honoured Retry-After
             self.assertEqual(late.wait(timeout=60)["status"], "done")
             self.assertEqual(queued.wait(timeout=60)["status"], "done")
+
+
+class Token(unittest.TestCase):
+    def test_a_service_with_a_token_file_needs_the_token(self):
+        require_radiantd()
+        with tempfile.TemporaryDirectory() as tmp:
+            token_file = Path(tmp) / "token"
+            token_file.write_text("py-s3cret\n")
+            with Daemon("--token-file", str(token_file)) as daemon:
+                self.assertEqual(Client(daemon.url).health(), {"status": "ok"})
+                with self.assertRaises(HTTPError) as caught:
+                    Client(daemon.url).submit(tiny_room())
+                self.assertEqual((caught.exception.status, caught.exception.code),
+                                 (401, "unauthorized"))
+                job = Client(daemon.url, token="py-s3cret").submit(tiny_room())
+                self.assertEqual(job.wait(timeout=60)["status"], "done")
 
 
 class Connection(unittest.TestCase):

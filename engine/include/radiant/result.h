@@ -9,6 +9,7 @@
 
 #include "radiant/scene.h"
 #include "radiant/vec3.h"
+#include "radiant/warnings.h"
 
 namespace radiant {
 
@@ -86,10 +87,15 @@ struct Result {
     std::string scene;
     SolveStatus status = SolveStatus::failed;
     std::string error;  ///< set when status == failed
+    /// Set when status == stopped: what ended the solve before its estimate met the tolerance
+    /// (the time limit, a cancel, the memory budget, or the finest mesh within the limits).
+    std::string stop_reason;
     SolveStats stats;
     std::vector<SensorResult> sensors;
     std::vector<SurfaceResult> surfaces;
     std::optional<SolvedMesh> mesh;
+    /// What looks like a modelling mistake (docs/warnings.md); empty when nothing does.
+    std::vector<Warning> warnings;
 };
 
 const char* to_string(SolveStatus status);

@@ -54,6 +54,10 @@ struct Surface {
     std::string name;
     std::string material;
     std::variant<Polygon, MeshGeometry, BoxGeometry> geometry;
+    /// Where the surface comes from in the input document, as warnings name it (a JSON pointer
+    /// such as "/surfaces/3"; an imported model's surfaces share their document surface's).
+    /// Empty: "/surfaces/<its index>". (Initialised, so that brace initialisers may omit it.)
+    std::string pointer = {};
 };
 
 enum class Distribution { isotropic, lambertian, photometric };
@@ -102,6 +106,7 @@ struct Settings {
     double tolerance = 0.01;  ///< target relative error of the solve
     std::optional<double> max_seconds;
     std::string method = "auto";
+    bool strict = false;  ///< warnings are errors (SolveOptions::strict)
     /// Significant digits of the values in the JSON result (1–17); the engine ignores it.
     int digits = 4;
 };

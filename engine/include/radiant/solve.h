@@ -22,9 +22,15 @@ struct SolveOptions {
     bool want_mesh = false;             ///< fill Result::mesh
     /// Least time between two snapshots handed to SolveObserver::on_snapshot while solving.
     double snapshot_interval_seconds = 0.5;
-    /// The hierarchical solver's elements stop splitting before they and their links would
-    /// hold more (the result is then `stopped`); 0: half the machine's physical memory.
+    /// Memory budget of the solve: the scene it is given and everything the solver allocates.
+    /// Each step estimates its memory before it allocates it; refinement stops at a step that
+    /// would not fit (the result is then `stopped`, with `stop_reason`), and a solve whose first
+    /// steps do not fit fails at once. 0: half the machine's physical memory.
     std::size_t max_memory_bytes = 0;
+    /// Warnings are errors: a scene with modelling warnings is refused before it is solved, and
+    /// a solve that ends with a warning (the time limit) fails; either result is `failed`, with
+    /// the warnings in Result::warnings.
+    bool strict = false;
 };
 
 /// The machine's physical memory in bytes (0 if unknown).
@@ -85,6 +91,9 @@ public:
     /// first patch mesh on also at least every 1.5 intervals, in every phase (phases without new
     /// values repeat the latest ones). May be called from a thread of the engine's own.
     virtual void on_snapshot(const Snapshot& /*snapshot*/) {}
+    /// The modelling checks' warnings, once, before solving starts, when there are any (the
+    /// result repeats them, with any the solve adds). From the solving thread.
+    virtual void on_warnings(const std::vector<Warning>& /*warnings*/) {}
 };
 
 /// Solves `scene`. Never throws for bad input: a scene that fails `check_scene` gives a result

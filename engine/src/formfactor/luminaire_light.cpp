@@ -94,16 +94,21 @@ Rgb unoccluded_luminaire_irradiance_at(const PreparedScene& scene, const Vec3& x
     return e;
 }
 
+Rgb luminaire_irradiance_from(const PreparedLuminaire& l, const Visibility& visibility,
+                              const Vec3& x, const Vec3& n, std::uint64_t& rays) {
+    const double k = direct_kernel_per_lm(l, x, n);
+    if (!(k > 0)) return {0, 0, 0};
+    ++rays;
+    if (!visibility.visible(x + n * visibility.epsilon(), l.position)) return {0, 0, 0};
+    return {l.flux_lm[0] * k, l.flux_lm[1] * k, l.flux_lm[2] * k};
+}
+
 Rgb luminaire_irradiance_at(const PreparedScene& scene, const Visibility& visibility, const Vec3& x,
                             const Vec3& n, std::uint64_t& rays) {
     Rgb e{0, 0, 0};
-    const double eps = visibility.epsilon();
     for (const PreparedLuminaire& l : scene.luminaires) {
-        const double k = direct_kernel_per_lm(l, x, n);
-        if (k <= 0) continue;
-        ++rays;
-        if (!visibility.visible(x + n * eps, l.position)) continue;
-        for (int c = 0; c < 3; ++c) e[c] += l.flux_lm[c] * k;
+        const Rgb one = luminaire_irradiance_from(l, visibility, x, n, rays);
+        for (int c = 0; c < 3; ++c) e[c] += one[c];
     }
     return e;
 }

@@ -27,6 +27,11 @@ double direct_kernel_per_lm(const PreparedLuminaire& luminaire, const Vec3& x, c
 /// Irradiance (lux, per channel) from every luminaire at point x with unit normal n, unoccluded.
 Rgb unoccluded_luminaire_irradiance_at(const PreparedScene& scene, const Vec3& x, const Vec3& n);
 
+/// Irradiance (lux, per channel) from one luminaire at point x with unit normal n, with one
+/// shadow ray when it is in front of x. Counts rays into `rays`.
+Rgb luminaire_irradiance_from(const PreparedLuminaire& luminaire, const Visibility& visibility,
+                              const Vec3& x, const Vec3& n, std::uint64_t& rays);
+
 /// Irradiance (lux, per channel) from every luminaire at point x with unit normal n, with one
 /// shadow ray per luminaire in front of x. Counts rays into `rays`.
 Rgb luminaire_irradiance_at(const PreparedScene& scene, const Visibility& visibility, const Vec3& x,

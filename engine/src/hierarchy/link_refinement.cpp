@@ -53,6 +53,13 @@ struct Verdict {
     std::vector<SourcePart> parts;
 };
 
+// A round's pairs are judged and applied this many at a time, so that the verdicts held at once
+// (each with its list of source parts) stay a few MB however many pairs a round has.
+constexpr std::size_t kPairsPerSlice = std::size_t{1} << 16;
+// Links at the end of linking: the new ones sorted, merged into a copy and then into the earlier
+// ones (std::inplace_merge takes a buffer as large): each link is held up to this many times.
+constexpr std::size_t kLinkCopiesAtMerge = 4;
+
 // Kernel values at the receiver's points: unoccluded, or with sampled visibility.
 struct KernelSamples {
     double factor = 0;                  ///< weighted mean: the link's K
@@ -453,47 +460,30 @@ void resume_links(RefinementOutcome& out, ElementTree& tree, const Visibility& v
                 }
             }
         }
-        std::vector<Verdict> verdicts(pairs.size());
+        std::vector<Verdict> verdicts(std::min(pairs.size(), kPairsPerSlice));
         tbb::combinable<std::uint64_t> rays([] { return std::uint64_t{0}; });
-        // A round of a large model takes seconds; a stop request ends it within a pair or so, and
-        // the pairs not judged by then are dropped, like those still pending between rounds.
-        std::atomic<bool> interrupted{false};
-        tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
-            if (pairs[i].receiver == pairs[i].source) return;  // opened next round
-            if (interrupted.load(std::memory_order_relaxed)) return;
-            if (criteria.should_stop && criteria.should_stop()) {
-                interrupted = true;
-                return;
-            }
-            verdicts[i] = oracle.judge(pairs[i], !out.budget_reached, rays.local());
-        });
         auto count_rays = [&] {
             out.rays += rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
             rays.clear();
         };
-        count_rays();
-        if (interrupted) {
-            // Keep what was judged to link; splitting would only queue pairs nobody judges.
-            for (std::size_t i = 0; i < pairs.size(); ++i) {
-                if (verdicts[i].decision == Decision::link) add_links(pairs[i], verdicts[i]);
-            }
-            out.stopped = true;
-            break;
-        }
-
         pending.clear();
-        const std::size_t first_new = tree.size();
         std::vector<std::size_t> rejudge;  // splits the budget refused: judged again unsplit
+        const std::size_t first_new = tree.size();
         auto over_budget = [&] {
-            const std::size_t held = tree.bytes() +
-                                     (out.links.capacity() + made.capacity()) * sizeof(Link) +
-                                     (pending.capacity() + out.deferred.capacity()) * sizeof(Pair);
+            const std::size_t held =
+                tree.bytes() + tree.size() * criteria.later_bytes_per_element +
+                (out.links.capacity() + made.capacity()) * sizeof(Link) * kLinkCopiesAtMerge +
+                (pairs.capacity() + pending.capacity() + out.deferred.capacity()) * sizeof(Pair) +
+                verdicts.size() * sizeof(Verdict);
             if (criteria.max_bytes > 0 && held > criteria.max_bytes) out.budget_reached = true;
             return out.budget_reached;
         };
+        // The slice's verdicts, [begin, begin + verdicts.size()) of the round's pairs.
+        std::size_t begin = 0;
+        auto verdict = [&](std::size_t i) -> Verdict& { return verdicts[i - begin]; };
         auto apply = [&](std::size_t i) {
             const Pair& p = pairs[i];
-            const Verdict& v = verdicts[i];
+            const Verdict& v = verdict(i);
             switch (v.decision) {
                 case Decision::drop:
                     break;
@@ -516,21 +506,52 @@ void resume_links(RefinementOutcome& out, ElementTree& tree, const Visibility& v
                 }
             }
         };
-        for (std::size_t i = 0; i < pairs.size(); ++i) {
-            if (pairs[i].receiver == pairs[i].source) {
-                pending.push_back(pairs[i]);
-            } else {
-                apply(i);
+        bool interrupted_round = false;
+        for (; begin < pairs.size() && !interrupted_round; begin += verdicts.size()) {
+            const std::size_t end = std::min(pairs.size(), begin + verdicts.size());
+            for (Verdict& v : verdicts) v = Verdict{};
+            // A round of a large model takes seconds; a stop request ends it within a pair or
+            // so, and the pairs not judged by then are dropped, like those still pending between
+            // rounds.
+            std::atomic<bool> interrupted{false};
+            tbb::parallel_for(begin, end, [&](std::size_t i) {
+                if (pairs[i].receiver == pairs[i].source) return;  // opened next round
+                if (interrupted.load(std::memory_order_relaxed)) return;
+                if (criteria.should_stop && criteria.should_stop()) {
+                    interrupted = true;
+                    return;
+                }
+                verdict(i) = oracle.judge(pairs[i], !out.budget_reached, rays.local());
+            });
+            count_rays();
+            if (interrupted) {
+                // Keep what was judged to link; splitting would only queue pairs nobody judges.
+                for (std::size_t i = begin; i < end; ++i) {
+                    if (verdict(i).decision == Decision::link) add_links(pairs[i], verdict(i));
+                }
+                interrupted_round = true;
+                break;
+            }
+            for (std::size_t i = begin; i < end; ++i) {
+                if (pairs[i].receiver == pairs[i].source) {
+                    pending.push_back(pairs[i]);
+                } else {
+                    apply(i);
+                }
+            }
+            if (!rejudge.empty()) {
+                tbb::parallel_for(std::size_t{0}, rejudge.size(), [&](std::size_t k) {
+                    verdict(rejudge[k]) = oracle.judge(pairs[rejudge[k]], false, rays.local());
+                });
+                const std::vector<std::size_t> unsplit = std::move(rejudge);
+                rejudge.clear();
+                for (const std::size_t i : unsplit) apply(i);
+                count_rays();
             }
         }
-        if (!rejudge.empty()) {
-            tbb::parallel_for(std::size_t{0}, rejudge.size(), [&](std::size_t k) {
-                verdicts[rejudge[k]] = oracle.judge(pairs[rejudge[k]], false, rays.local());
-            });
-            const std::vector<std::size_t> unsplit = std::move(rejudge);
-            rejudge.clear();
-            for (const std::size_t i : unsplit) apply(i);
-            count_rays();
+        if (interrupted_round) {
+            out.stopped = true;
+            break;
         }
         if (tree.size() > first_new) {
             out.rays += tree.light_from(first_new);

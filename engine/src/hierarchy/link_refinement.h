@@ -68,7 +68,11 @@ struct RefinementCriteria {
     std::uint64_t seed = 1;
     double ambient_irradiance = 0;  ///< guess of the reflected light, for new elements' estimates
     int channels = 1;
-    std::size_t max_bytes = 0;  ///< memory budget of the tree and links; 0: none
+    /// Memory budget of the tree, the links and what the solve will hold per element once they
+    /// are made (`later_bytes_per_element`: the linked system's arrays, leaf meshes, summaries);
+    /// 0: none.
+    std::size_t max_bytes = 0;
+    std::size_t later_bytes_per_element = 0;
     /// Root patches whose factor sums the solver completes (see HierarchicalSystem): their
     /// near-singular links keep the mean over their points, which completion assumes.
     std::span<const char> completed_patch;

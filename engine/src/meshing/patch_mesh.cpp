@@ -286,6 +286,39 @@ double polygon_diameter(const Poly& p) {
     return d;
 }
 
+// The patches' polygons of every piece: subdivided to the target edge (grown until the count fits
+// max_patches), then split along the lines where other surfaces touch the piece. Sets `h` to the
+// edge used.
+struct PatchPlan {
+    std::vector<std::vector<Poly>> polygons;  ///< per piece
+    Contacts contacts;
+};
+
+PatchPlan plan_patches(const PreparedScene& scene, const MeshingOptions& options, double eps,
+                       double& h) {
+    h = options.target_edge_m;
+    PatchPlan plan;
+    std::vector<std::vector<Poly>>& sub = plan.polygons;
+    sub = subdivide_all(scene, h);
+    for (int round = 0; round < 20 && count_patches(scene, sub) > options.max_patches; ++round) {
+        const double ratio = static_cast<double>(count_patches(scene, sub)) /
+                             static_cast<double>(options.max_patches);
+        h *= std::max(1.05, std::sqrt(ratio) * 1.02);
+        sub = subdivide_all(scene, h);
+    }
+    const double gap = options.shading_gap_m > 0 ? options.shading_gap_m : 0.5 * h;
+    plan.contacts = all_contacts(scene, eps, gap);
+    for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
+        for (const Segment& s : plan.contacts.segments[i])
+            split_along(sub[i], s, scene.pieces[i].normal, eps);
+    }
+    return plan;
+}
+
+double mesh_epsilon(const PreparedScene& scene) {
+    return 1e-7 * std::max(scene.diagonal_m, 1e-300);
+}
+
 }  // namespace
 
 double target_patch_edge(double mean_free_path_m, double tolerance) {
@@ -293,24 +326,21 @@ double target_patch_edge(double mean_free_path_m, double tolerance) {
     return std::max(1.5 * mean_free_path_m * std::sqrt(tol), 1e-9);
 }
 
-PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) {
-    const double eps = 1e-7 * std::max(scene.diagonal_m, 1e-300);
-    double h = options.target_edge_m;
-    std::vector<std::vector<Poly>> sub = subdivide_all(scene, h);
-    for (int round = 0; round < 20 && count_patches(scene, sub) > options.max_patches; ++round) {
-        const double ratio = static_cast<double>(count_patches(scene, sub)) /
-                             static_cast<double>(options.max_patches);
-        h *= std::max(1.05, std::sqrt(ratio) * 1.02);
-        sub = subdivide_all(scene, h);
-    }
-    target_edge_m_ = h;
+std::size_t PatchMesh::count(const PreparedScene& scene, const MeshingOptions& options) {
+    double h = 0;
+    return count_patches(scene, plan_patches(scene, options, mesh_epsilon(scene), h).polygons);
+}
 
-    const double gap = options.shading_gap_m > 0 ? options.shading_gap_m : 0.5 * h;
-    const Contacts contacts = all_contacts(scene, eps, gap);
+PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) {
+    const double eps = mesh_epsilon(scene);
+    double h = 0;
+    PatchPlan plan = plan_patches(scene, options, eps, h);
+    target_edge_m_ = h;
+    std::vector<std::vector<Poly>>& sub = plan.polygons;
+    const Contacts& contacts = plan.contacts;
     VertexIndex index;
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
         const Piece& piece = scene.pieces[i];
-        for (const Segment& s : contacts.segments[i]) split_along(sub[i], s, piece.normal, eps);
         const bool two_sided = scene.materials[static_cast<std::size_t>(piece.material)].two_sided;
         for (int side = 0; side < (two_sided ? 2 : 1); ++side) {
             for (const Poly& p : sub[i]) {

@@ -54,6 +54,9 @@ double target_patch_edge(double mean_free_path_m, double tolerance);
 class PatchMesh {
 public:
     PatchMesh(const PreparedScene& scene, const MeshingOptions& options);
+    /// The patches PatchMesh(scene, options) would make, without making them: it holds their
+    /// polygons for a while (a tenth of the mesh), not the mesh.
+    static std::size_t count(const PreparedScene& scene, const MeshingOptions& options);
 
     std::size_t size() const { return patches_.size(); }
     const PatchGeometry& patch(std::size_t i) const { return patches_[i]; }

@@ -8,7 +8,8 @@ namespace {
 
 struct Splitter {
     double max_edge_squared;
-    std::vector<Element>& out;
+    std::vector<Element>* out;  ///< null: count only
+    std::size_t count = 0;
 
     // Bisects `t` across its longest edge until every edge is at most the target. Returns the
     // element's index when `t` needed no split, else −1.
@@ -17,11 +18,13 @@ struct Splitter {
                      ca = length_squared(t.a - t.c);
         const double longest = std::max({ab, bc, ca});
         if (longest <= max_edge_squared) {
+            ++count;
+            if (!out) return -1;
             Element e = proto;
             e.triangle = t;
             e.area_m2 = 0.5 * length(cross(t.b - t.a, t.c - t.a));
-            out.push_back(e);
-            return static_cast<int>(out.size()) - 1;
+            out->push_back(e);
+            return static_cast<int>(out->size()) - 1;
         }
         // Rotate so that a→b is the longest edge; its midpoint m cuts t into (a, m, c), (m, b, c).
         Triangle r = t;
@@ -31,18 +34,15 @@ struct Splitter {
         const int first = split({r.a, m, r.c}, proto);
         const int second = split({m, r.b, r.c}, proto);
         if (first >= 0 && second >= 0) {
-            out[static_cast<std::size_t>(first)].sibling = second;
-            out[static_cast<std::size_t>(second)].sibling = first;
+            (*out)[static_cast<std::size_t>(first)].sibling = second;
+            (*out)[static_cast<std::size_t>(second)].sibling = first;
         }
         return -1;
     }
 };
 
-}  // namespace
-
-ElementMesh::ElementMesh(const PreparedScene& scene, double max_edge_m) {
-    const double h = std::max(max_edge_m, 1e-9);
-    Splitter splitter{h * h, elements_};
+// Runs `splitter` over every piece's fan of triangles.
+void split_pieces(const PreparedScene& scene, Splitter& splitter) {
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
         const Piece& piece = scene.pieces[i];
         Element proto;
@@ -55,6 +55,33 @@ ElementMesh::ElementMesh(const PreparedScene& scene, double max_edge_m) {
             splitter.split({piece.vertices[0], piece.vertices[k], piece.vertices[k + 1]}, proto);
         }
     }
+}
+
+}  // namespace
+
+ElementCount ElementMesh::count(const PreparedScene& scene, double max_edge_m) {
+    const double h = std::max(max_edge_m, 1e-9);
+    ElementCount out;
+    for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
+        Splitter splitter{h * h, nullptr, 0};
+        const Piece& piece = scene.pieces[i];
+        for (std::size_t k = 1; k + 1 < piece.vertices.size(); ++k)
+            splitter.split({piece.vertices[0], piece.vertices[k], piece.vertices[k + 1]}, {});
+        out.elements += splitter.count;
+        const bool two_sided = scene.materials[static_cast<std::size_t>(piece.material)].two_sided;
+        out.sides += splitter.count * (two_sided ? 2 : 1);
+    }
+    return out;
+}
+
+ElementMesh::ElementMesh(const PreparedScene& scene, double max_edge_m) {
+    const double h = std::max(max_edge_m, 1e-9);
+    // Counted first, so the lists hold exactly their elements (the memory budget's estimate).
+    const ElementCount counted = count(scene, h);
+    elements_.reserve(counted.elements);
+    sides_.reserve(counted.sides);
+    Splitter splitter{h * h, &elements_, 0};
+    split_pieces(scene, splitter);
     for (std::size_t i = 0; i < elements_.size(); ++i) {
         Element& e = elements_[i];
         e.front = static_cast<int>(sides_.size());

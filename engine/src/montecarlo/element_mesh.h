@@ -31,8 +31,15 @@ struct ElementSide {
     bool back = false;
 };
 
+struct ElementCount {
+    std::size_t elements = 0;
+    std::size_t sides = 0;  ///< two per element of a two-sided material, else one
+};
+
 class ElementMesh {
 public:
+    /// What ElementMesh(scene, max_edge_m) would hold, without holding it.
+    static ElementCount count(const PreparedScene& scene, double max_edge_m);
     /// Cuts every piece of `scene` to edges of at most `max_edge_m`. Linear in the output.
     ElementMesh(const PreparedScene& scene, double max_edge_m);
 

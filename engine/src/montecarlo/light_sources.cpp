@@ -12,15 +12,20 @@ namespace radiant {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Next-event estimation visits every source up to this many, else a power-weighted draw of
-// this many: a floor of a hundred rooms must not cast a hundred shadow rays per hit.
+// Next-event estimation visits every source up to this many, else draws from the light tree:
+// a floor of a hundred rooms must not cast a hundred shadow rays per hit.
 constexpr std::size_t kMaxNextEventSources = 16;
 // Sources drawn per point beyond that: with the draw following each source's rough light, a
 // few carry most of it, and every draw costs a shadow ray (a floor of 16 rooms: 16 draws held
 // the gather's time at 90 % of the solve).
 constexpr std::size_t kNextEventDraws = 4;
-// Share of a draw of sources that goes by power alone rather than by rough light at the point.
+// Share of a draw of sources that goes by power alone rather than down the light tree.
 constexpr double kPowerShare = 0.1;
+// A sensor's cut of the light tree: clusters hold at most this share of the bounds on the
+// light the cut's nodes could send, and the cut has at most this many nodes (rooms of a floor
+// beyond the sensor's own are a few clusters; a room's own panels are each on their own).
+constexpr double kCutRelativeBound = 0.01;
+constexpr std::size_t kCutMaxNodes = 32;
 constexpr int kGammaCells = 180;
 constexpr int kCCells = 72;
 
@@ -39,6 +44,19 @@ void add(Rgb& a, const Rgb& b) {
 Vec3 photometric_direction(const PreparedLuminaire& l, double gamma, double c) {
     return l.aim * std::cos(gamma) +
            (l.c0_axis * std::cos(c) + l.c90_axis * std::sin(c)) * std::sin(gamma);
+}
+
+// The largest intensity per lumen of flux in any direction.
+double peak_intensity_per_lm(const PreparedLuminaire& l) {
+    switch (l.distribution) {
+        case Distribution::isotropic:
+            return 1 / (4 * kPi);
+        case Distribution::lambertian:
+            return 1 / kPi;
+        case Distribution::photometric:
+            break;
+    }
+    return l.table->peak_candela() / l.table->flux_lm();
 }
 
 }  // namespace
@@ -96,6 +114,19 @@ LightSources::LightSources(const PreparedScene& scene, double ray_epsilon)
         total_power_ += std::max(w, 0.0);
         source_cdf_.push_back(total_power_);
     }
+    std::vector<LightTreeSource> tree_sources;
+    for (const PreparedLuminaire& l : scene.luminaires) {
+        Box at;
+        at.add(l.position);
+        const double power = luminance(l.flux_lm);
+        tree_sources.push_back({at, power, power * peak_intensity_per_lm(l)});
+    }
+    for (const EmittingPiece& e : pieces_) {
+        Box bounds;
+        bounds.add(scene.pieces[static_cast<std::size_t>(e.piece)].vertices);
+        tree_sources.push_back({bounds, e.power, e.power / kPi});
+    }
+    tree_ = LightTree(tree_sources);
 }
 
 Vec3 LightSources::point_on(const EmittingPiece& e, double r1, double r2, double r3) const {
@@ -156,14 +187,12 @@ Photon LightSources::emit(SampleStream& rng) const {
     return photon;
 }
 
-Rgb LightSources::luminaire_part(std::size_t i, const Vec3& x, const Vec3& n,
-                                 const Visibility& visibility, std::uint64_t& rays) const {
-    const PreparedLuminaire& l = scene_.luminaires[i];
-    const double kernel = direct_kernel_per_lm(l, x, n);
-    if (!(kernel > 0)) return {0, 0, 0};
-    ++rays;
-    if (!visibility.visible(x + n * epsilon_, l.position)) return {0, 0, 0};
-    return scaled(l.flux_lm, kernel);
+Rgb LightSources::part(std::size_t s, const Vec3& x, const Vec3& n, const Visibility& visibility,
+                       SampleStream& rng, int samples, std::uint64_t& rays) const {
+    const std::size_t luminaires = scene_.luminaires.size();
+    return s < luminaires
+               ? luminaire_irradiance_from(scene_.luminaires[s], visibility, x, n, rays)
+               : piece_part(pieces_[s - luminaires], x, n, visibility, rng, samples, rays);
 }
 
 Rgb LightSources::piece_part(const EmittingPiece& e, const Vec3& x, const Vec3& n,
@@ -201,42 +230,60 @@ Rgb LightSources::direct_at(const Vec3& x, const Vec3& n, const Visibility& visi
                             SampleStream& rng, std::uint64_t& rays) const {
     Rgb sum{0, 0, 0};
     const std::size_t count = source_power_.size();
-    const std::size_t luminaires = scene_.luminaires.size();
-    auto part = [&](std::size_t s) {
-        return s < luminaires ? luminaire_part(s, x, n, visibility, rays)
-                              : piece_part(pieces_[s - luminaires], x, n, visibility, rng, 1, rays);
-    };
     if (count <= kMaxNextEventSources) {
-        for (std::size_t s = 0; s < count; ++s) add(sum, part(s));
+        for (std::size_t s = 0; s < count; ++s) add(sum, part(s, x, n, visibility, rng, 1, rays));
         return sum;
     }
-    std::vector<double> cdf(count);
-    double rough_total = 0;
-    for (std::size_t s = 0; s < count; ++s) {
-        rough_total += rough_light(s, x, n);
-        cdf[s] = rough_total;
-    }
-    const double by_light = rough_total > 0 ? 1 - kPowerShare : 0.0;
-    auto probability = [&](std::size_t s) {
-        const double rough = cdf[s] - (s > 0 ? cdf[s - 1] : 0.0);
-        return (by_light > 0 ? by_light * rough / rough_total : 0.0) +
-               (1 - by_light) * std::max(source_power_[s], 0.0) / total_power_;
-    };
+    const auto leaf = [&](std::size_t s) { return rough_light(s, x, n); };
     for (std::size_t k = 0; k < kNextEventDraws; ++k) {
         const double r = rng.next();
-        const std::size_t s = r < by_light ? draw(cdf, r / by_light)
-                                           : draw(source_cdf_, (r - by_light) / (1 - by_light));
-        const double p = probability(s) * kNextEventDraws;
-        if (p > 0) add(sum, scaled(part(s), 1 / p));
+        std::size_t s = 0;
+        double by_tree = 0;
+        if (r >= kPowerShare) {
+            if (!tree_.draw(x, n, (r - kPowerShare) / (1 - kPowerShare), leaf, s, by_tree)) {
+                continue;
+            }
+        } else {
+            s = draw(source_cdf_, r / kPowerShare);
+            by_tree = tree_.probability(s, x, n, leaf);
+        }
+        const double p = ((1 - kPowerShare) * by_tree +
+                          kPowerShare * std::max(source_power_[s], 0.0) / total_power_) *
+                         kNextEventDraws;
+        if (p > 0) add(sum, scaled(part(s, x, n, visibility, rng, 1, rays), 1 / p));
     }
     return sum;
 }
 
-Rgb LightSources::emitting_pieces_at(const Vec3& x, const Vec3& n, const Visibility& visibility,
-                                     SampleStream& rng, int samples, std::uint64_t& rays) const {
+LightSources::SensorSources LightSources::sensor_sources(const Vec3& x, const Vec3& n,
+                                                         const Visibility& visibility,
+                                                         std::uint64_t& rays) const {
+    SensorSources out;
+    const LightCut cut = tree_.cut(x, n, kCutRelativeBound, kCutMaxNodes);
+    const std::size_t luminaires = scene_.luminaires.size();
+    for (const std::size_t s : cut.sources) {
+        if (s < luminaires) {
+            add(out.luminaires,
+                luminaire_irradiance_from(scene_.luminaires[s], visibility, x, n, rays));
+        } else {
+            out.pieces.push_back(s - luminaires);
+        }
+    }
+    out.clusters = cut.clusters;
+    return out;
+}
+
+Rgb LightSources::sensor_set_light(const SensorSources& sources, const Vec3& x, const Vec3& n,
+                                   const Visibility& visibility, SampleStream& rng, int samples,
+                                   std::uint64_t& rays) const {
     Rgb sum{0, 0, 0};
-    for (const EmittingPiece& e : pieces_)
-        add(sum, piece_part(e, x, n, visibility, rng, samples, rays));
+    for (const std::size_t e : sources.pieces)
+        add(sum, piece_part(pieces_[e], x, n, visibility, rng, samples, rays));
+    for (const int cluster : sources.clusters) {
+        double p = 0;
+        const std::size_t s = tree_.draw_by_power(cluster, rng.next(), p);
+        if (p > 0) add(sum, scaled(part(s, x, n, visibility, rng, 1, rays), 1 / p));
+    }
     return sum;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/random.h"
+#include "montecarlo/light_tree.h"
 #include "scene/prepared_scene.h"
 #include "visibility/visibility.h"
 
@@ -32,16 +33,29 @@ public:
     /// Direct irradiance (lux, per channel) at x with unit normal n: every luminaire exactly,
     /// with one shadow ray each; every emitting piece by its exact unoccluded factor times the
     /// visibility of one point drawn on it, which never exceeds the unoccluded light (no
-    /// outliers next to a panel). With many sources (a floor of rooms) a subset is drawn by
-    /// what each would send to x unoccluded, roughly, mixed with their power so that none that
-    /// could light x is never drawn. Counts rays into `rays`.
+    /// outliers next to a panel). With many sources (a floor of rooms) a few are drawn from the
+    /// light tree by what each would roughly send to x unoccluded, mixed with a draw by power
+    /// so that none that could light x is never drawn. Counts rays into `rays`.
     Rgb direct_at(const Vec3& x, const Vec3& n, const Visibility& visibility, SampleStream& rng,
                   std::uint64_t& rays) const;
 
-    /// The emitting pieces' part of direct_at at a sensor, with `samples` visibility points per
-    /// piece: irradiance of emitting surfaces only (lux, per channel).
-    Rgb emitting_pieces_at(const Vec3& x, const Vec3& n, const Visibility& visibility,
-                           SampleStream& rng, int samples, std::uint64_t& rays) const;
+    /// The sources as a sensor at x (unit normal n) sees them: the light tree's cut there. The
+    /// luminaires of the cut are exact (one shadow ray each, counted into `rays`); its emitting
+    /// pieces and clusters are sampled by sensor_set_light().
+    struct SensorSources {
+        Rgb luminaires{0, 0, 0};  ///< lux, per channel
+        std::vector<std::size_t> pieces;
+        std::vector<int> clusters;
+    };
+    SensorSources sensor_sources(const Vec3& x, const Vec3& n, const Visibility& visibility,
+                                 std::uint64_t& rays) const;
+
+    /// One sample of the light of `sources`' emitting pieces (exact factors, `samples`
+    /// visibility points each) and clusters (one source each, drawn by power; its bound keeps
+    /// the sample small) at x: lux, per channel.
+    Rgb sensor_set_light(const SensorSources& sources, const Vec3& x, const Vec3& n,
+                         const Visibility& visibility, SampleStream& rng, int samples,
+                         std::uint64_t& rays) const;
 
 private:
     struct EmittingPiece {
@@ -60,8 +74,9 @@ private:
     double rough_light(std::size_t s, const Vec3& x, const Vec3& n) const;
     Vec3 point_on(const EmittingPiece& e, double r1, double r2, double r3) const;
     Vec3 luminaire_direction(std::size_t luminaire, SampleStream& rng, double& weight) const;
-    Rgb luminaire_part(std::size_t luminaire, const Vec3& x, const Vec3& n,
-                       const Visibility& visibility, std::uint64_t& rays) const;
+    /// Source s's light at x: a luminaire exactly, an emitting piece with `samples` points.
+    Rgb part(std::size_t s, const Vec3& x, const Vec3& n, const Visibility& visibility,
+             SampleStream& rng, int samples, std::uint64_t& rays) const;
     Rgb piece_part(const EmittingPiece& e, const Vec3& x, const Vec3& n,
                    const Visibility& visibility, SampleStream& rng, int samples,
                    std::uint64_t& rays) const;
@@ -74,6 +89,7 @@ private:
     std::vector<double> source_power_;
     std::vector<double> source_cdf_;
     double total_power_ = 0;
+    LightTree tree_;
 };
 
 }  // namespace radiant

@@ -10,8 +10,9 @@
 namespace radiant {
 namespace {
 
-// Chunks traced between two looks at `stop`, a whole number of batch rounds.
-constexpr std::size_t kWaveChunks = 8 * PhotonField::kBatches;
+// Chunks traced between two looks at `stop`, a whole number of batch rounds; their deposits are
+// held until the wave is summed (a few MB), enough chunks to keep every core busy.
+constexpr std::size_t kWaveChunks = 4 * PhotonField::kBatches;
 // A photon in a furnace of reflectance 0.999 bounces a thousand times on average; this only
 // stops one that a rounding error keeps inside a closed solid.
 constexpr int kMaxBounces = 100000;
@@ -37,6 +38,12 @@ Rgb PhotonField::per_area(const std::vector<Rgb>& tally, int side) const {
     const auto s = static_cast<std::size_t>(side);
     const double scale = chunks_ ? inverse_area_[s] / static_cast<double>(photons()) : 0.0;
     return {tally[s][0] * scale, tally[s][1] * scale, tally[s][2] * scale};
+}
+
+std::size_t PhotonField::wave_bytes(double mean_reflectance) {
+    const double deposits = 1 / (1 - std::clamp(mean_reflectance, 0.0, 0.98));
+    return static_cast<std::size_t>(
+        2 * deposits * static_cast<double>(kWaveChunks * kChunkPhotons * sizeof(Deposit)));
 }
 
 std::size_t PhotonField::memory_bytes() const {

@@ -42,6 +42,13 @@ public:
                kBatches / static_cast<double>(photons());
     }
     std::size_t memory_bytes() const;
+    /// What the tallies cost per side.
+    static constexpr std::size_t kBytesPerSide =
+        2 * sizeof(Rgb) + kBatches * sizeof(float) + sizeof(double);
+    /// What trace() holds while it runs: a wave of chunks' deposits, each photon leaving about
+    /// 1 / (1 − ρ) of them where it survives a bounce with probability ρ on average (the
+    /// area-weighted mean of the materials' highest channel); the lists may double as they grow.
+    static std::size_t wave_bytes(double mean_reflectance);
 
 private:
     struct Deposit {

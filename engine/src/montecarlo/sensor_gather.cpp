@@ -5,7 +5,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include "formfactor/luminaire_light.h"
 #include "geometry/cosine_direction.h"
 #include "solution/surface_summary.h"
 
@@ -36,14 +35,19 @@ SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
                            std::uint64_t seed)
     : scene_(scene), mesh_(mesh), sources_(sources), visibility_(visibility), seed_(seed) {
     for (const PreparedSensorSet& set : scene.sensors) {
-        for (const Vec3& p : set.points) points_.push_back({p, set.normal, 0, {}, {}});
+        for (const Vec3& p : set.points) points_.push_back({p, set.normal, {}, 0, {}, {}});
     }
 }
 
+std::size_t SensorGather::bytes_per_point() { return sizeof(Point); }
+
 std::size_t SensorGather::memory_bytes() const {
     std::size_t bytes = points_.capacity() * sizeof(Point);
-    for (const Point& p : points_)
-        bytes += p.set_direct.capacity() * sizeof(double) + p.hits.capacity() * sizeof(int);
+    for (const Point& p : points_) {
+        bytes += p.set_direct.capacity() * sizeof(double) + p.hits.capacity() * sizeof(int) +
+                 p.sources.pieces.capacity() * sizeof(std::size_t) +
+                 p.sources.clusters.capacity() * sizeof(int);
+    }
     return bytes;
 }
 
@@ -54,15 +58,17 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
     const double t_max = 4 * scene_.diagonal_m + 1;
     const Vec3 origin = point.position + point.normal * eps;
     if (point.set_direct.empty()) {
-        point.luminaires = photometric(
-            luminaire_irradiance_at(scene_, visibility_, point.position, point.normal, rays),
-            channels);
+        point.sources = sources_.sensor_sources(point.position, point.normal, visibility_, rays);
+        point.luminaires = photometric(point.sources.luminaires, channels);
     }
+    // Exactly what `sets` need: the memory budget counts them so (bytes_per_set).
+    point.set_direct.reserve(static_cast<std::size_t>(sets));
+    point.hits.reserve(static_cast<std::size_t>(sets) * kRaysPerSet);
     for (int set = static_cast<int>(point.set_direct.size()); set < sets; ++set) {
         SampleStream rng(seed_, kSensorStream, index, static_cast<std::uint64_t>(set));
         double direct =
-            photometric(sources_.emitting_pieces_at(point.position, point.normal, visibility_, rng,
-                                                    kPieceSamples, rays),
+            photometric(sources_.sensor_set_light(point.sources, point.position, point.normal,
+                                                  visibility_, rng, kPieceSamples, rays),
                         channels);
         double reflected = 0;
         for (int k = 0; k < kRaysPerSet; ++k) {

@@ -1,5 +1,6 @@
 // Sensor illuminance by final gather over the photon field: the luminaires' light exactly (one
-// shadow ray each), the emitting surfaces' by exact factors times sampled visibility, and the
+// shadow ray each), the emitting surfaces' by exact factors times sampled visibility (on a floor
+// of many rooms, those of the other rooms drawn as a few clusters of the light tree), and the
 // reflected light from sets of cosine-distributed rays. Where a ray lands, the light that point
 // reflects is its direct light found there (next-event estimation) plus the photon field's
 // indirect irradiance on the element. The rays and the direct light are kept, so a denser
@@ -51,12 +52,17 @@ public:
     /// points.
     std::vector<GatheredPoint> evaluate(const PhotonField& field) const;
     std::size_t memory_bytes() const;
+    /// What one more ray set costs at one point.
+    static constexpr std::size_t kBytesPerSet = sizeof(double) + kRaysPerSet * sizeof(int);
+    /// What a point holds before any set, besides its two lists' heap blocks.
+    static std::size_t bytes_per_point();
 
 private:
     struct Point {
         Vec3 position;
         Vec3 normal;
-        double luminaires = 0;           ///< photometric, exact
+        LightSources::SensorSources sources;  ///< the light tree's cut at the point
+        double luminaires = 0;                ///< photometric, exact
         std::vector<double> set_direct;  ///< per set: emitting pieces + mean ρ ⊙ E_direct(hit)
         std::vector<int> hits;           ///< per ray, set by set: the side it landed on, or −1
     };

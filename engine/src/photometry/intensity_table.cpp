@@ -191,6 +191,8 @@ double IntensityTable::candela(double gamma_rad, double c_rad) const {
     return std::max(0.0, value);
 }
 
+double IntensityTable::peak_candela() const { return *std::max_element(cd_.begin(), cd_.end()); }
+
 double IntensityTable::integrate() const {
     constexpr double kGammaStep = 2.5 * kDegree, kCStep = 5 * kDegree;
     const auto over_gamma = [&](double c_rad) {

@@ -27,6 +27,10 @@ public:
     /// ∫ I dω over the sphere (lm), by Gauss–Legendre quadrature on the table's cells.
     double flux_lm() const { return flux_lm_; }
 
+    /// The largest intensity in any direction (cd): the table's largest value, which the
+    /// interpolation (monotone between samples) never exceeds.
+    double peak_candela() const;
+
 private:
     double row(std::size_t g, double c_deg) const;
     double integrate() const;

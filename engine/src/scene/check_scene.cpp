@@ -7,6 +7,7 @@
 #include "photometry/intensity_table.h"
 #include "radiant/box.h"
 #include "radiant/scene.h"
+#include "scene/json_pointer.h"
 
 namespace radiant {
 namespace {
@@ -14,21 +15,6 @@ namespace {
 // Relative tolerances: scenes come in any unit, so absolute thresholds would be wrong somewhere.
 constexpr double kZeroAreaTolerance = 1e-12;  ///< area / (bounding-box diagonal)²
 constexpr double kPlanarityTolerance = 1e-3;  ///< distance from the plane / polygon size
-
-/// RFC 6901 escaping of one reference token (material names are user text).
-std::string escape_token(const std::string& token) {
-    std::string out;
-    for (const char c : token) {
-        if (c == '~') {
-            out += "~0";
-        } else if (c == '/') {
-            out += "~1";
-        } else {
-            out += c;
-        }
-    }
-    return out;
-}
 
 std::string at(const std::string& base, std::size_t index) {
     return base + "/" + std::to_string(index);
@@ -116,7 +102,7 @@ private:
 void check_materials(const Scene& scene, Checker& check) {
     std::unordered_set<std::string> seen;
     for (const Material& m : scene.materials) {
-        const std::string base = "/materials/" + escape_token(m.name);
+        const std::string base = "/materials/" + escape_pointer_token(m.name);
         if (!seen.insert(m.name).second) check.report(base, "duplicate material name");
         for (std::size_t c = 0; c < 3; ++c) {
             const double r = m.reflectance[c];

@@ -42,9 +42,16 @@ constexpr double kSystemToleranceShare = 0.02;
 // takes at most this share of the snapshot interval, so that they never slow the sweeps much.
 constexpr double kSnapshotGatherCoarsening = 10;
 constexpr double kSnapshotGatherShare = 0.25;
-// Share of the memory budget the element tree and links may take; the sweeps, the sorted copy
-// of the links and the meshes need the rest.
-constexpr double kRefinementMemoryShare = 0.6;
+// Memory per root patch: the patch mesh with its OpenMesh faces and the enclosure and
+// front-share tables (1.7 KB measured on the furnished office, resident), and the element tree
+// as first built (its bytes() per root patch: 2.6 KB there).
+constexpr std::size_t kRootPatchBytes = 2048;
+constexpr std::size_t kFirstTreeBytesPerRoot = 3072;
+// What the solve holds per element of the tree once it is linked: the linked system's arrays
+// (≈ 100 B), the leaf meshes of a snapshot, the one it replaces, the result's and its copy
+// (≈ 180 B each per leaf), and the leaves' summaries twice (≈ 80 B each); about half the
+// elements are leaves.
+constexpr std::size_t kLaterBytesPerElement = 512;
 // Root patches beyond this would not fit the element budget.
 constexpr std::size_t kMaxRootPatches = 2'000'000;
 // Snapshots show the root patches until the links are refined (the leaves lit by the emitters'
@@ -65,8 +72,25 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
 
     // Only gaps narrower than the smallest element must cut the roots: wider ones are resolved
     // by refinement, as the dense path resolves those wider than half its patch.
-    const PatchMesh roots(
-        scene, {kRootEdgeFactor * patch_edge, kMaxRootPatches, 0.5 * kMinEdgeFactor * patch_edge});
+    const MeshingOptions root_options{kRootEdgeFactor * patch_edge, kMaxRootPatches,
+                                      0.5 * kMinEdgeFactor * patch_edge};
+    // Memory: the roots and the first tree must fit, or the solve fails before building them;
+    // refinement then splits elements and makes links only while they fit.
+    const std::size_t root_count = PatchMesh::count(scene, root_options);
+    const std::size_t first_bytes =
+        root_count * (kRootPatchBytes + kFirstTreeBytesPerRoot + kLaterBytesPerElement);
+    if (!memory_->fits(first_bytes)) {
+        const std::string refusal =
+            memory_->refusal("the hierarchical solver's " + std::to_string(root_count) +
+                                 " root patches and their element tree",
+                             first_bytes);
+        stop_for_memory(refusal);
+        result.error = "memory budget: " + refusal;
+        return result;
+    }
+    MemoryHold roots_hold(*memory_, root_count * kRootPatchBytes);
+    MemoryHold tree_hold(*memory_, first_bytes - roots_hold.bytes());
+    const PatchMesh roots(scene, root_options);
     const std::vector<char> enclosed =
         enclosed_patches(scene, roots, visibility, input.triangle_piece, options_.seed);
     const std::vector<double> front_share = front_shares(
@@ -137,10 +161,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         links_ = links;
         report("form factors", std::min(0.55, 0.05 + 0.02 * rounds));
     };
-    const std::size_t budget =
-        options_.max_memory_bytes > 0 ? options_.max_memory_bytes : physical_memory_bytes() / 2;
-    criteria.max_bytes =
-        static_cast<std::size_t>(kRefinementMemoryShare * static_cast<double>(budget));
+    // The tree's own estimate gives way to the refinement's accounting of it.
+    tree_hold.resize(0);
+    criteria.max_bytes = memory_->available_bytes();
+    criteria.later_bytes_per_element = kLaterBytesPerElement;
     // Links are made lazily, as their sources come to shoot: the emitting patches' first; the
     // rest once the emitters have sent their light, which a viewer sees meanwhile.
     std::vector<char> emitting(roots.size(), 0);
@@ -175,6 +199,15 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     rays_ = rays_before_links + linked.rays;
     elements_ = tree.leaf_count();
     links_ = linked.links.size();
+    tree_hold.resize(tree.bytes() + tree.size() * kLaterBytesPerElement +
+                     linked.links.capacity() * sizeof(Link));
+    if (linked.budget_reached) {
+        stop_for_memory("the hierarchical solver's elements stopped splitting when they, their " +
+                        std::to_string(linked.links.size()) +
+                        " links and what the rest of the solve needs for them reached the budget "
+                        "of " +
+                        mebibytes_text(memory_->limit_bytes()));
+    }
 
     HierarchicalSystem system(tree, linked.links, enclosed, front_share, channels);
     // Sensors gather down the tree from the current radiosity, opening nodes that could add more
@@ -279,6 +312,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
                  channels, stopped);
+    // What the links lost or carried unevenly, apart from the iteration's residual.
+    result.stats.error_parts.residual = outcome.error_estimate;
+    if (error_estimate > outcome.error_estimate)
+        result.stats.error_parts.completion = error_estimate;
     final_mesh_ = mesh;
     final_mesh_version_ = kLeafMeshVersion;
     return result;

@@ -12,6 +12,7 @@
 #include "montecarlo/sensor_gather.h"
 #include "solution/sensors.h"
 #include "solution/surface_summary.h"
+#include "solver/memory_estimates.h"
 #include "solver/pipeline.h"
 
 namespace radiant {
@@ -52,6 +53,41 @@ struct MonteCarloLevel {
     SensorGather gather;
 };
 
+// A display triangle: three vertices with their radiosity, its corners, surface and radiosity.
+constexpr std::size_t kDisplayBytesPerElement =
+    3 * (sizeof(Vec3) + sizeof(double)) + sizeof(std::array<int, 3>) + sizeof(int) + sizeof(double);
+
+// What one level of elements holds while its rounds run: the elements and their sides, the ray
+// tracer over them, the photon tallies and a wave's deposits, the sensor points before their
+// ray sets; and at its peak either the ray tracer's build (with the triangle list it copies) or
+// the display meshes and the sides' summaries that snapshots and the result are made of (a
+// snapshot is built while the one it replaces is still shown; the result's mesh is a copy).
+std::size_t level_bytes(const ElementCount& count, std::size_t points, double survival,
+                        int display_copies) {
+    const std::size_t build = count.elements * (sizeof(Triangle) + kEmbreeBuildBytesPerTriangle -
+                                                kEmbreeBytesPerTriangle);
+    const std::size_t display =
+        static_cast<std::size_t>(display_copies) *
+        (count.elements * kDisplayBytesPerElement + count.sides * sizeof(SolvedElement));
+    return count.elements * (sizeof(Element) + kEmbreeBytesPerTriangle) +
+           count.sides * (sizeof(ElementSide) + PhotonField::kBytesPerSide) +
+           PhotonField::wave_bytes(survival) +
+           points *
+               (SensorGather::bytes_per_point() + 2 * kHeapBlockBytes + sizeof(GatheredPoint)) +
+           std::max(build, display);
+}
+
+// How likely a photon survives a bounce, on average over the surfaces' area.
+double mean_survival(const PreparedScene& scene) {
+    double weighted = 0, area = 0;
+    for (const Piece& p : scene.pieces) {
+        const Rgb& rho = scene.materials[static_cast<std::size_t>(p.material)].reflectance;
+        weighted += p.area_m2 * std::min(1.0, std::max({rho[0], rho[1], rho[2]}));
+        area += p.area_m2;
+    }
+    return area > 0 ? weighted / area : 0;
+}
+
 Rgb times(const Rgb& a, const Rgb& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
 // Every element side as the surface summaries need it: irradiance from all photons, radiosity
@@ -78,7 +114,12 @@ std::vector<SolvedElement> solved_sides(const PreparedScene& scene, const Elemen
 SolvedMesh display_mesh(const PreparedScene& scene, const ElementMesh& mesh,
                         const std::vector<SolvedElement>& sides) {
     SolvedMesh out;
+    // Reserved exactly, as kDisplayBytesPerElement counts them.
     out.vertices.reserve(3 * mesh.size());
+    out.vertex_radiosity.reserve(3 * mesh.size());
+    out.triangles.reserve(mesh.size());
+    out.triangle_surface.reserve(mesh.size());
+    out.triangle_radiosity.reserve(mesh.size());
     for (std::size_t i = 0; i < mesh.size(); ++i) {
         const Element& e = mesh[i];
         const double b =
@@ -138,11 +179,43 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     std::size_t rounds = 0;
     bool stopped = false;
     std::uint64_t mesh_version = kFirstMeshVersion;
+    // Memory: each level is estimated from its element count before it is built; ray sets are
+    // added only as far as they fit.
+    std::size_t sensor_points = 0;
+    for (const std::size_t n : set_sizes) sensor_points += n;
+    const double survival = mean_survival(scene);
+    const int display_copies = (observer_ ? 2 : 1) + (options_.want_mesh ? 1 : 0);
+    auto bytes_of = [&](const ElementCount& count) {
+        return level_bytes(count, sensor_points, survival, display_copies);
+    };
     double edge = kEdgeOfFreePath * input.mean_free_path_m;
+    ElementCount count = ElementMesh::count(scene, edge);
+    const std::size_t natural_bytes = bytes_of(count);
+    // Coarser elements than the light's variation asks for, if the budget needs it: the
+    // discretisation estimate then says what that costs, and the result is `stopped` if it
+    // misses the tolerance.
+    while (!memory_->fits(bytes_of(count))) {
+        const ElementCount coarser = ElementMesh::count(scene, 2 * edge);
+        if (coarser.elements >= count.elements) {
+            result.error = "memory budget: " +
+                           memory_->refusal(
+                               "monte-carlo's coarsest elements (one per triangle), their ray "
+                               "tracer, photons and sensors",
+                               bytes_of(count));
+            return result;
+        }
+        stop_for_memory(memory_->refusal(
+            "monte-carlo's elements at a quarter of the mean free path", natural_bytes));
+        edge *= 2;
+        count = coarser;
+    }
+    MemoryHold level_hold(*memory_, bytes_of(count));
+    MemoryHold sets_hold(*memory_, 0);
     for (int refinements = 0;; ++refinements, edge *= kRefinementRatio) {
         // Stage: meshing — elements, and a ray tracer over them so that a hit names its element.
         Clock::time_point stage_start = Clock::now();
         report("meshing", 0.02, rounds, estimate_so_far(reported));
+        level.reset();  // the finer level replaces it (its estimate was held in its place)
         level = std::make_unique<MonteCarloLevel>(scene, edge, options_.seed);
         elements_ = level->mesh.size();
         mesh_version = kFirstMeshVersion + static_cast<std::uint64_t>(refinements);
@@ -167,7 +240,21 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             rays_ += photon_rays;
             photons.rays += photon_rays;
             photons.seconds += seconds_since(stage_start);
-            // Stage: gather — the sensors' ray sets, to this round's budget.
+            // Stage: gather — the sensors' ray sets, to this round's budget, as far as they fit.
+            const std::size_t set_bytes = sensor_points * SensorGather::kBytesPerSet;
+            const std::size_t fitting_sets =
+                set_bytes == 0 ? static_cast<std::size_t>(budget.sets)
+                               : (memory_->available_bytes() + sets_hold.bytes()) / set_bytes;
+            bool sets_cut = false;
+            if (fitting_sets < static_cast<std::size_t>(budget.sets)) {
+                stop_for_memory(memory_->refusal(
+                    std::to_string(budget.sets) + " ray sets at " + std::to_string(sensor_points) +
+                        " sensor points",
+                    (static_cast<std::size_t>(budget.sets) - gather.sets()) * set_bytes));
+                budget.sets = std::max(gather.sets(), static_cast<int>(fitting_sets));
+                sets_cut = true;
+            }
+            sets_hold.resize(static_cast<std::size_t>(budget.sets) * set_bytes);
             stage_start = Clock::now();
             report("gather", 0.5, rounds, estimate_so_far(reported));
             const std::uint64_t gather_rays = gather.gather(budget.sets, stop);
@@ -194,9 +281,28 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 break;
             }
             if (reported <= options_.tolerance) break;
+            if (sets_cut) {
+                stopped = true;
+                break;
+            }
             // Bias does not fall with samples: a finer mesh does.
             if (!(error.parts.discretisation < kTargetShare * options_.tolerance)) {
                 refine = refinements < kMaxRefinements;
+                if (refine) {
+                    // The finer level replaces this one, with the ray sets this one has.
+                    const ElementCount finer = ElementMesh::count(scene, edge * kRefinementRatio);
+                    const std::size_t finer_bytes =
+                        bytes_of(finer) + static_cast<std::size_t>(gather.sets()) * set_bytes;
+                    if (!memory_->fits(
+                            finer_bytes -
+                            std::min(finer_bytes, level_hold.bytes() + sets_hold.bytes()))) {
+                        stop_for_memory(
+                            memory_->refusal("monte-carlo's finer elements", finer_bytes));
+                        refine = false;
+                    } else {
+                        level_hold.resize(bytes_of(finer));
+                    }
+                }
                 stopped = !refine;
                 break;
             }

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include "checks/modelling_checks.h"
 #include "formfactor/enclosure.h"
 #include "formfactor/transport.h"
 #include "meshing/patch_mesh.h"
@@ -16,6 +18,7 @@
 #include "solution/result_difference.h"
 #include "solution/sensors.h"
 #include "solution/surface_summary.h"
+#include "solver/memory_estimates.h"
 #include "solver/shooting_solver.h"
 #include "solver/solver.h"
 #include "visibility/occluder_triangles.h"
@@ -61,6 +64,13 @@ constexpr double kMaxRefineRatio = 8;
 // errors of 2 % of the tolerance where the check's two solutions agreed to 0.1 % of it; dense
 // errors of 4e-6 at tolerance 0.1 where they agreed to 2e-8).
 constexpr double kUnresolvedShare = 0.05;
+// Memory per patch of the dense path and of matrix-free shooting, besides the form-factor
+// matrix: the patch mesh (PatchGeometry and OpenMesh faces), the linear system's arrays, the
+// solved patches and the display meshes of two snapshots.
+constexpr std::size_t kDensePatchBytes = 3072;
+// What a discretisation check that could not coarsen the mesh (the tolerance already gives the
+// scene's coarsest) claims, in tolerances: more than one, so that a finer solve measures it.
+constexpr double kUncheckedShare = 2;
 // Mesh versions of refined solutions: above those of either path (dense 1, hierarchical 1–3),
 // so a viewer sees the triangles change.
 constexpr std::uint64_t kFirstRefinedMeshVersion = 4;
@@ -74,6 +84,16 @@ double richardson_estimate(const Result& fine, const Result& coarse, double rati
     return kCheckMargin * largest_relative_difference(fine, coarse) / (ratio - 1);
 }
 
+// How much finer `fine`'s discretisation is than `coarse`'s, in the units its error goes with:
+// the tolerance for the hierarchical solver, patches for a dense mesh (error ∝ h² ∝ 1/patches),
+// which stops growing with the tolerance at the scene's coarsest mesh.
+double mesh_ratio(const std::string& method, double tolerance_ratio, const Result& fine,
+                  const Result& coarse) {
+    if (method == "hierarchical") return tolerance_ratio;
+    return static_cast<double>(fine.stats.patches) /
+           static_cast<double>(std::max<std::size_t>(coarse.stats.patches, 1));
+}
+
 }  // namespace
 
 Pipeline::Pipeline(const Scene& scene, const SolveOptions& options, SolveObserver* observer,
@@ -84,7 +104,9 @@ Pipeline::Pipeline(const Scene& scene, const SolveOptions& options, SolveObserve
       cancel_(cancel),
       limits_(limits),
       start_(Clock::now()),
-      snapshots_(observer, options.snapshot_interval_seconds, start_) {
+      snapshots_(observer, options.snapshot_interval_seconds, start_),
+      memory_(std::make_shared<MemoryBudget>(
+          options.max_memory_bytes > 0 ? options.max_memory_bytes : physical_memory_bytes() / 2)) {
     if (options.max_seconds) {
         deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(
                                  std::chrono::duration<double>(*options.max_seconds));
@@ -131,13 +153,23 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
     double estimate = result.stats.error_estimate;
     if (finished) {
         Pipeline check(scene_, coarse, nullptr, cancel_, limits_);
+        check.memory_ = memory_;
         // Its linear system is solved as far as this one's, so that the difference is the
         // mesh's, not the iteration's.
         check.system_tolerance_scale_ = options_.tolerance / coarse_tolerance;
         const Result c = check.run_method(prepared, method);
         rays_ += check.rays_;
+        if (!check.memory_stop_.empty()) stop_for_memory(check.memory_stop_);
         finished = c.status == SolveStatus::converged;
-        if (finished) estimate = std::max(estimate, richardson_estimate(result, c, ratio));
+        if (finished) {
+            const double measured = mesh_ratio(method, ratio, result, c);
+            // The same mesh twice shows no error at all, whatever this mesh's is.
+            const double discretisation = measured >= kMinCheckRatio
+                                              ? richardson_estimate(result, c, measured)
+                                              : kUncheckedShare * options_.tolerance;
+            result.stats.error_parts.discretisation = discretisation;
+            estimate = std::max(estimate, discretisation);
+        }
     }
     result.stats.error_estimate = estimate;
     result.stats.rays = rays_;
@@ -167,7 +199,7 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
         // The dense path's mesh cannot outgrow its patch budget: `auto` goes on with the
         // hierarchical solver, the others with the finest mesh that fits, once.
         bool switched = false;
-        double mesh_ratio = ratio;
+        double refine_ratio = ratio;
         if (method != "hierarchical") {
             const DenseMeshSize size = dense_mesh_size(prepared, finer.tolerance);
             if (!size.fits && options_.method == "auto") {
@@ -175,15 +207,17 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
                 switched = true;
             } else if (!size.fits) {
                 // Errors go as h², i.e. as 1 / patches.
-                mesh_ratio = static_cast<double>(size.patches) /
-                             static_cast<double>(std::max<std::size_t>(result.stats.patches, 1));
-                if (!(mesh_ratio >= kMinCheckRatio)) break;
+                refine_ratio = static_cast<double>(size.patches) /
+                               static_cast<double>(std::max<std::size_t>(result.stats.patches, 1));
+                if (!(refine_ratio >= kMinCheckRatio)) break;
             }
         }
         report("refining", 0.95, result.stats.iterations, result.stats.error_estimate,
                result.stats.unshot_fraction);
         Pipeline refined(scene_, finer, nullptr, cancel_, limits_);
+        refined.memory_ = memory_;
         Result f = refined.run_method(prepared, method);
+        if (!refined.memory_stop_.empty()) stop_for_memory(refined.memory_stop_);
         // A finer solve's own estimate need only meet the asked tolerance, not its own; it is
         // judged against that below.
         bool finished = f.status == SolveStatus::converged ||
@@ -196,8 +230,13 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
             refined.check_discretisation(prepared, method, f);
             finished = f.status == SolveStatus::converged;
         } else if (finished) {
-            f.stats.error_estimate =
-                std::max(f.stats.error_estimate, richardson_estimate(f, result, mesh_ratio));
+            const double measured = mesh_ratio(method, refine_ratio, f, result);
+            finished = measured >= kMinCheckRatio;
+            if (finished) {
+                f.stats.error_parts.discretisation = richardson_estimate(f, result, measured);
+                f.stats.error_estimate =
+                    std::max(f.stats.error_estimate, f.stats.error_parts.discretisation);
+            }
         }
         rays_ += refined.rays_;
         if (!finished) {
@@ -265,6 +304,7 @@ void Pipeline::finish_stats(Result& result, const std::string& method, std::size
     st.rays = rays_;
     st.unshot_fraction = unshot_fraction;
     st.error_estimate = error_estimate;
+    st.error_parts.residual = error_estimate;  // the linear system's; checks add their parts
     st.channels = channels;
     st.threads = tbb::this_task_arena::max_concurrency();
     st.seconds = elapsed();
@@ -277,6 +317,17 @@ Result Pipeline::run() {
 
     report("meshing", 0.0);
     const Clock::time_point prepare_start = Clock::now();
+    // The scene counts in the budget (the caller holds it while it is solved), and so does its
+    // preparation; a budget they do not fit fails the solve before anything is allocated.
+    const std::size_t input_bytes = scene_bytes(scene_);
+    const std::size_t preparation_bytes = preparation_peak_bytes(scene_);
+    if (!memory_->fits(input_bytes + preparation_bytes)) {
+        result.error = "memory budget: " + memory_->refusal("the scene and its preparation",
+                                                            input_bytes + preparation_bytes);
+        return result;
+    }
+    const MemoryHold input_hold(*memory_, input_bytes);
+    MemoryHold preparation_hold(*memory_, preparation_bytes);
     PreparedSolve prepared;
     prepared.scene = prepare_scene(scene_);
     if (prepared.scene.pieces.empty()) {
@@ -310,14 +361,33 @@ Result Pipeline::run() {
     auto [triangles, triangle_piece] = occluder_triangles(prepared.scene);
     prepared.triangle_piece = std::move(triangle_piece);
     prepared.visibility = make_embree_visibility(triangles);
+    std::vector<Triangle>().swap(triangles);  // Embree holds its own copy
+    preparation_hold.resize(preparation_held_bytes(scene_));
     prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility,
                                                prepared.triangle_piece, options_.seed);
     if (method == "auto" && prefers_hierarchy(dense_mesh_size(prepared, options_.tolerance)))
         method = "hierarchical";
     record_stage("prepare", prepare_start, 0, 0);
+    // Stage: checks — what looks like a modelling mistake, on the ray tracer just built and
+    // before any solving work, so that a strict solve refuses at once.
+    const Clock::time_point checks_start = Clock::now();
+    std::uint64_t check_rays = 0;
+    std::vector<Warning> warnings =
+        modelling_warnings({scene_, prepared.scene, *prepared.visibility, triangles,
+                            prepared.triangle_piece, options_.seed},
+                           check_rays);
+    rays_ += check_rays;
+    record_stage("checks", checks_start, check_rays, 0);
+    if (observer_ && !warnings.empty()) observer_->on_warnings(warnings);
+    if (options_.strict && !warnings.empty()) {
+        result.error = "strict: the scene has warnings: " + describe_warnings(warnings);
+        result.warnings = std::move(warnings);
+        return result;
+    }
     if (method == "monte-carlo") {
         Result solved = run_monte_carlo(prepared);
         if (solved.status != SolveStatus::failed) finish(solved);
+        solved.warnings = std::move(warnings);
         return solved;
     }
     const Clock::time_point solve_start = Clock::now();
@@ -333,7 +403,12 @@ Result Pipeline::run() {
         record_stage("checking", check_start, rays_ - rays_before, 0);
     }
     finish(solved);
+    solved.warnings = std::move(warnings);
     return solved;
+}
+
+void Pipeline::stop_for_memory(const std::string& refusal) {
+    if (memory_stop_.empty()) memory_stop_ = refusal;
 }
 
 void Pipeline::finish(Result& solved) {
@@ -344,6 +419,24 @@ void Pipeline::finish(Result& solved) {
     if (solved.status == SolveStatus::converged &&
         !(solved.stats.error_estimate <= options_.tolerance)) {
         solved.status = SolveStatus::stopped;
+    }
+    // Nor does a mesh the memory budget kept coarser than the tolerance asked for: its estimate
+    // (Richardson's, from two meshes the budget may have made alike) cannot vouch for it.
+    if (solved.status == SolveStatus::converged && !memory_stop_.empty()) {
+        solved.status = SolveStatus::stopped;
+    }
+    if (solved.status == SolveStatus::stopped && solved.stop_reason.empty()) {
+        if (cancel_ && cancel_->cancelled()) {
+            solved.stop_reason = "cancelled";
+        } else if (!memory_stop_.empty()) {
+            solved.stop_reason = "memory budget: " + memory_stop_;
+        } else if (deadline_ && Clock::now() >= *deadline_) {
+            char limit[64];
+            std::snprintf(limit, sizeof limit, "the time limit of %g s", *options_.max_seconds);
+            solved.stop_reason = limit;
+        } else {
+            solved.stop_reason = "the estimate exceeds the tolerance on the finest mesh tried";
+        }
     }
     solved.stats.stages = stages_;
     publish_final(solved);
@@ -362,10 +455,44 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     // eighth of it cut them (the hierarchical roots' gap at this tolerance): every patch costs a
     // factor in every shot, and the dense mesh's half-patch gap splits the floor along every
     // piece of furniture (office-x64: 100 000 patches).
-    PatchMesh patches(prepared, matrix_free ? MeshingOptions{patch_edge, kMaxMatrixFreePatches,
-                                                             0.125 * patch_edge}
-                                            : MeshingOptions{patch_edge, kMaxDensePatches});
-    const std::size_t n = patches.size();
+    // Memory: the patches and the matrix with the solver's own copy of it must fit; the patch
+    // budget shrinks (patches grow) until they do.
+    auto dense_bytes = [&](std::size_t patch_count) {
+        const std::string& m = requested != "auto"                    ? requested
+                               : patch_count <= kMaxAutoDirectPatches ? "direct"
+                                                                      : "gauss-seidel";
+        const std::size_t per_factor = matrix_free
+                                           ? 0
+                                           : sizeof(float) + (m == "direct"     ? 2 * sizeof(double)
+                                                              : m == "shooting" ? sizeof(float)
+                                                                                : 0);
+        return patch_count * kDensePatchBytes + patch_count * patch_count * per_factor;
+    };
+    std::size_t max_patches = matrix_free ? kMaxMatrixFreePatches : kMaxDensePatches;
+    const std::size_t wanted_bytes = dense_bytes(max_patches);
+    bool patches_cut = false;
+    while (max_patches > 1 && !memory_->fits(dense_bytes(max_patches))) {
+        max_patches -= std::max<std::size_t>(1, max_patches / 16);
+        patches_cut = true;
+    }
+    const MeshingOptions meshing = matrix_free
+                                       ? MeshingOptions{patch_edge, max_patches, 0.125 * patch_edge}
+                                       : MeshingOptions{patch_edge, max_patches};
+    // Counted before it is built: a piece is one patch at least, and the lines where other
+    // surfaces touch it split it further, so the mesh can exceed max_patches.
+    const std::size_t n = PatchMesh::count(prepared, meshing);
+    if (!memory_->fits(dense_bytes(n))) {
+        const std::string refusal =
+            memory_->refusal(std::to_string(n) + " patches and their form factors", dense_bytes(n));
+        stop_for_memory(refusal);
+        result.error = "memory budget: " + refusal;
+        return result;
+    }
+    PatchMesh patches(prepared, meshing);
+    if (patches_cut && patches.target_edge_m() > patch_edge) {
+        stop_for_memory(memory_->refusal("the patches the tolerance asks for", wanted_bytes));
+    }
+    const MemoryHold dense_hold(*memory_, dense_bytes(n));
     const int channels = prepared.channels;
 
     const OcclusionCulling culling(prepared);

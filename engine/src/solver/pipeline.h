@@ -11,6 +11,7 @@
 
 #include "radiant/solve.h"
 #include "scene/prepared_scene.h"
+#include "solver/memory_budget.h"
 #include "solver/snapshot_publisher.h"
 #include "solver/solver.h"
 #include "visibility/visibility.h"
@@ -112,6 +113,9 @@ private:
                       std::size_t iterations, double error_estimate, double unshot_fraction,
                       int channels, bool stopped) const;
 
+    /// Stops refinement for want of memory: the result becomes `stopped`, saying why.
+    void stop_for_memory(const std::string& refusal);
+
     const Scene& scene_;
     const SolveOptions& options_;
     SolveObserver* observer_;
@@ -130,6 +134,10 @@ private:
     /// The solved mesh of the result, as each path leaves it for publish_final.
     std::shared_ptr<const SolvedMesh> final_mesh_;
     std::uint64_t final_mesh_version_ = 0;
+    /// The solve's memory ledger; pipelines that check or refine a result share their parent's.
+    std::shared_ptr<MemoryBudget> memory_;
+    /// Why a `stopped` result stopped, when it was for memory (see stop_for_memory).
+    std::string memory_stop_;
 };
 
 }  // namespace radiant

@@ -8,6 +8,7 @@
 
 #include <tbb/task_arena.h>
 
+#include "checks/solve_outcome.h"
 #include "solver/pipeline.h"
 
 namespace radiant {
@@ -48,6 +49,11 @@ Result solve(const Scene& scene, const SolveOptions& options, SolveObserver* obs
         }
         tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
         arena.execute([&] { result = Pipeline(scene, options, observer, cancel).run(); });
+        check_solve_outcome(result, options, cancel && cancel->cancelled(), result.warnings);
+        if (options.strict && !result.warnings.empty() && result.status != SolveStatus::failed) {
+            result.status = SolveStatus::failed;
+            result.error = "strict: the solve has warnings: " + describe_warnings(result.warnings);
+        }
     } catch (const std::exception& e) {
         result = Result{};
         result.scene = scene.name;
@@ -67,6 +73,7 @@ SolveOptions options_from(const Settings& settings) {
     o.tolerance = settings.tolerance;
     o.max_seconds = settings.max_seconds;
     o.method = settings.method;
+    o.strict = settings.strict;
     return o;
 }
 

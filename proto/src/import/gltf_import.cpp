@@ -4,12 +4,15 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <map>
-#include <set>
+#include <utility>
+#include <vector>
 
 #include "gltf_axes.h"
+#include "json_text.h"
 
 namespace radiant::proto {
 namespace {
@@ -92,14 +95,14 @@ tinygltf::FsCallbacks no_files() {
 
 class Reader {
 public:
-    Reader(const tinygltf::Model& model, double units_per_metre)
-        : model_(model), units_per_metre_(units_per_metre) {}
+    Reader(const tinygltf::Model& model, double units_per_metre, const ImportBudget& budget)
+        : model_(model), units_per_metre_(units_per_metre), budget_(budget) {}
 
     /// Empty on success, else the problem.
     std::string read_scene(ImportedGeometry& out);
 
 private:
-    std::string node(int index, const Mat4& parent, ImportedGeometry& out);
+    std::string node(int index, const Mat4& m, ImportedGeometry& out);
     std::string primitive(const tinygltf::Primitive& p, const Mat4& m, const std::string& where,
                           ImportedGeometry& out);
     /// Start of element k of an accessor after bounds checks, or an error.
@@ -108,7 +111,8 @@ private:
 
     const tinygltf::Model& model_;
     double units_per_metre_;
-    std::set<int> visited_;
+    const ImportBudget& budget_;
+    std::size_t vertices_ = 0, faces_ = 0;  ///< expanded so far, against budget_
     std::map<int, std::size_t> part_of_material_;
 };
 
@@ -126,33 +130,43 @@ std::string Reader::read_scene(ImportedGeometry& out) {
             {m.name.empty() ? "material " + std::to_string(out.materials.size()) : m.name,
              f.size() >= 3 ? Rgb{f[0], f[1], f[2]} : Rgb{1, 1, 1}});
     }
-    for (const int n : s.nodes) {
-        if (std::string e = node(n, kIdentity, out); !e.empty()) return e;
+    // Depth first with an explicit stack: a chain of nodes as long as the file allows must not
+    // recurse once per node. Each node is visited at most once, so the walk ends.
+    std::vector<std::pair<int, Mat4>> pending;
+    for (auto it = s.nodes.rbegin(); it != s.nodes.rend(); ++it)
+        pending.emplace_back(*it, kIdentity);
+    std::vector<bool> visited(model_.nodes.size(), false);
+    while (!pending.empty()) {
+        const auto [index, parent] = pending.back();
+        pending.pop_back();
+        if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size())
+            return "node " + std::to_string(index) + " does not exist";
+        if (visited[static_cast<std::size_t>(index)])
+            return "node " + std::to_string(index) + " appears twice in the scene's node tree";
+        visited[static_cast<std::size_t>(index)] = true;
+        const tinygltf::Node& n = model_.nodes[static_cast<std::size_t>(index)];
+        const Mat4 m = multiply(parent, local_matrix(n));
+        if (std::string e = node(index, m, out); !e.empty()) return e;
+        for (auto it = n.children.rbegin(); it != n.children.rend(); ++it) {
+            pending.emplace_back(*it, m);
+        }
     }
     if (out.parts.empty()) return "the glTF scene has no triangles";
     return {};
 }
 
-std::string Reader::node(int index, const Mat4& parent, ImportedGeometry& out) {
-    if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size())
-        return "node " + std::to_string(index) + " does not exist";
-    if (!visited_.insert(index).second)
-        return "node " + std::to_string(index) + " appears twice in the scene's node tree";
+/// The mesh of node `index`, if it has one, with the node's world matrix `m`.
+std::string Reader::node(int index, const Mat4& m, ImportedGeometry& out) {
     const tinygltf::Node& n = model_.nodes[static_cast<std::size_t>(index)];
-    const Mat4 m = multiply(parent, local_matrix(n));
-    if (n.mesh >= 0) {
-        if (static_cast<std::size_t>(n.mesh) >= model_.meshes.size())
-            return "node " + std::to_string(index) + " refers to a missing mesh";
-        const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(n.mesh)];
-        const std::string name =
-            "mesh \"" + (mesh.name.empty() ? std::to_string(n.mesh) : mesh.name) + "\"";
-        for (std::size_t k = 0; k < mesh.primitives.size(); ++k) {
-            const std::string where = name + " primitive " + std::to_string(k);
-            if (std::string e = primitive(mesh.primitives[k], m, where, out); !e.empty()) return e;
-        }
-    }
-    for (const int child : n.children) {
-        if (std::string e = node(child, m, out); !e.empty()) return e;
+    if (n.mesh < 0) return {};
+    if (static_cast<std::size_t>(n.mesh) >= model_.meshes.size())
+        return "node " + std::to_string(index) + " refers to a missing mesh";
+    const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(n.mesh)];
+    const std::string name =
+        "mesh \"" + (mesh.name.empty() ? std::to_string(n.mesh) : mesh.name) + "\"";
+    for (std::size_t k = 0; k < mesh.primitives.size(); ++k) {
+        const std::string where = name + " primitive " + std::to_string(k);
+        if (std::string e = primitive(mesh.primitives[k], m, where, out); !e.empty()) return e;
     }
     return {};
 }
@@ -202,12 +216,20 @@ std::string Reader::primitive(const tinygltf::Primitive& p, const Mat4& m, const
         TINYGLTF_COMPONENT_TYPE_FLOAT) {
         return where + ": POSITION must be float";
     }
+    // Before anything is copied: nodes that instance one mesh multiply its vertices.
+    vertices_ += count;
+    if (auto refused = budget_.refuse(vertices_, faces_)) return *refused;
     std::vector<Vec3> points(count);
     for (std::size_t k = 0; k < count; ++k) {
         float xyz[3];
         std::memcpy(xyz, base + k * stride, sizeof xyz);
         points[k] = from_gltf_axes(transform(m, {xyz[0], xyz[1], xyz[2]})) * units_per_metre_;
     }
+    // Faces count against the budget before the indices are copied.
+    const auto count_faces = [&](std::size_t n) {
+        faces_ += p.mode == TINYGLTF_MODE_TRIANGLES ? n / 3 : (n > 2 ? n - 2 : 0);
+        return budget_.refuse(vertices_, faces_);
+    };
     std::vector<std::uint32_t> indices;
     if (p.indices >= 0) {
         const auto& a = model_.accessors.size() > static_cast<std::size_t>(p.indices)
@@ -224,6 +246,7 @@ std::string Reader::primitive(const tinygltf::Primitive& p, const Mat4& m, const
             !e.empty()) {
             return where + ": " + e;
         }
+        if (auto refused = count_faces(index_count)) return *refused;
         indices.resize(index_count);
         for (std::size_t k = 0; k < index_count; ++k) {
             std::uint32_t value = 0;
@@ -241,10 +264,12 @@ std::string Reader::primitive(const tinygltf::Primitive& p, const Mat4& m, const
             indices[k] = value;
         }
     } else {
+        if (auto refused = count_faces(count)) return *refused;
         indices.resize(count);
         for (std::size_t k = 0; k < count; ++k) indices[k] = static_cast<std::uint32_t>(k);
     }
 
+    const std::size_t n = indices.size();
     const auto [slot, added] = part_of_material_.try_emplace(p.material, out.parts.size());
     if (added) {
         ImportedPart& part = out.parts.emplace_back();
@@ -264,7 +289,6 @@ std::string Reader::primitive(const tinygltf::Primitive& p, const Mat4& m, const
         mesh.faces.push_back({offset + static_cast<int>(a), offset + static_cast<int>(b),
                               offset + static_cast<int>(c)});
     };
-    const std::size_t n = indices.size();
     if (p.mode == TINYGLTF_MODE_TRIANGLES) {
         if (n % 3 != 0) return where + ": the vertex count is not a multiple of 3";
         for (std::size_t k = 0; k + 2 < n; k += 3) add(indices[k], indices[k + 1], indices[k + 2]);
@@ -281,11 +305,32 @@ std::string Reader::primitive(const tinygltf::Primitive& p, const Mat4& m, const
     return {};
 }
 
+/// The JSON part of a glTF file: all of a .gltf, the first chunk of a .glb (when it is JSON).
+std::string_view json_part(const std::vector<unsigned char>& bytes) {
+    const std::string_view all(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    if (!all.starts_with("glTF")) return all;
+    constexpr std::size_t kHeader = 12, kChunkHeader = 8;
+    if (bytes.size() < kHeader + kChunkHeader || all.substr(16, 4) != "JSON") return {};
+    std::uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + kHeader, sizeof length);
+    return all.substr(kHeader + kChunkHeader, length);
+}
+
 }  // namespace
 
 ImportOutcome import_gltf(const std::vector<unsigned char>& bytes, LengthUnit unit,
-                          const std::optional<std::filesystem::path>& directory) {
+                          const std::optional<std::filesystem::path>& directory,
+                          const ImportBudget& budget) {
     if (bytes.size() > std::numeric_limits<unsigned>::max()) return std::string("file too large");
+    // tinygltf reads extras and extensions recursively: bound the nesting before it parses.
+    if (const std::string_view json = json_part(bytes); !json.empty()) {
+        if (auto refused = check_json_text(json)) {
+            return "the glTF's JSON at " +
+                   (refused->problem.pointer.empty() ? std::string("its start")
+                                                     : refused->problem.pointer) +
+                   ": " + refused->problem.message;
+        }
+    }
     tinygltf::TinyGLTF loader;
     if (!directory) loader.SetFsCallbacks(no_files());
     // Only geometry and material factors are used: images are neither decoded nor checked.
@@ -307,7 +352,7 @@ ImportOutcome import_gltf(const std::vector<unsigned char>& bytes, LengthUnit un
         return error.empty() ? "not a glTF 2.0 file" : error;
     }
     ImportedGeometry out;
-    Reader reader(model, 1.0 / meters_per_unit(unit));
+    Reader reader(model, 1.0 / meters_per_unit(unit), budget);
     if (std::string e = reader.read_scene(out); !e.empty()) return e;
     return out;
 }

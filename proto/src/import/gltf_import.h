@@ -13,7 +13,10 @@ namespace radiant::proto {
 /// node transforms applied, converted from glTF's y-up metres to the scene's z-up `unit`. A
 /// material's reflectance is its baseColorFactor (textures are ignored). External files
 /// (a .gltf's buffers) are read from `directory` only when it is given; otherwise refused.
+/// The node graph is walked without recursion, and the JSON is checked against a JsonBudget
+/// before tinygltf (whose reader recurses) sees it. Refused when it exceeds `budget`.
 ImportOutcome import_gltf(const std::vector<unsigned char>& bytes, LengthUnit unit,
-                          const std::optional<std::filesystem::path>& directory);
+                          const std::optional<std::filesystem::path>& directory,
+                          const ImportBudget& budget);
 
 }  // namespace radiant::proto

@@ -2,6 +2,8 @@
 // of the file, in the scene's length unit, counter-clockwise front faces.
 #pragma once
 
+#include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <variant>
@@ -27,6 +29,27 @@ struct ImportedGeometry {
     std::vector<ImportedMaterial> materials;
     std::vector<ImportedPart> parts;  ///< never empty
     std::string material_notes;       ///< why faces may lack a material, e.g. an MTL not found
+};
+
+/// The most geometry an import may produce: what is left of the scene's limits (SceneLimits).
+/// Readers check it before they expand each part, since a glTF mesh instanced by many nodes
+/// multiplies its triangles.
+struct ImportBudget {
+    std::size_t max_vertices = std::numeric_limits<std::size_t>::max();
+    std::size_t max_faces = std::numeric_limits<std::size_t>::max();
+
+    /// Why `vertices` and `faces` in all do not fit, if they do not.
+    std::optional<std::string> refuse(std::size_t vertices, std::size_t faces) const {
+        if (vertices > max_vertices) {
+            return "the model has more than " + std::to_string(max_vertices) +
+                   " vertices, what is left of the scene's limit";
+        }
+        if (faces > max_faces) {
+            return "the model has more than " + std::to_string(max_faces) +
+                   " faces, what is left of the scene's limit";
+        }
+        return std::nullopt;
+    }
 };
 
 /// The geometry, or why the file cannot be used ("line 17: ...", "mesh \"desk\": ...").

@@ -78,7 +78,8 @@ std::string material_warnings(const std::string& warnings) {
 
 }  // namespace
 
-ImportOutcome import_obj(const std::string& obj_text, const MtlSource& mtl) {
+ImportOutcome import_obj(const std::string& obj_text, const MtlSource& mtl,
+                         const ImportBudget& budget) {
     if (auto bad = bad_vertex_line(obj_text)) return *bad;
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
@@ -100,6 +101,10 @@ ImportOutcome import_obj(const std::string& obj_text, const MtlSource& mtl) {
     if (!error.empty()) return tidy(error);
 
     const std::size_t vertex_count = attrib.vertices.size() / 3;
+    std::size_t face_count = 0;
+    for (const auto& shape : shapes) face_count += shape.mesh.num_face_vertices.size();
+    // A vertex may be copied into each part that uses it; the file's own count is the floor.
+    if (auto refused = budget.refuse(vertex_count, face_count)) return *refused;
     ImportedGeometry out;
     for (const auto& m : materials) {
         out.materials.push_back({m.name, Rgb{m.diffuse[0], m.diffuse[1], m.diffuse[2]}});
@@ -140,6 +145,9 @@ ImportOutcome import_obj(const std::string& obj_text, const MtlSource& mtl) {
         }
     }
     if (out.parts.empty()) return std::string("the OBJ text has no faces");
+    std::size_t part_vertices = 0;
+    for (const ImportedPart& part : out.parts) part_vertices += part.mesh.vertices.size();
+    if (auto refused = budget.refuse(part_vertices, face_count)) return *refused;
     out.material_notes = material_warnings(warning);
     return out;
 }

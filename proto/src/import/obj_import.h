@@ -18,6 +18,8 @@ struct MtlSource {
 
 /// Faces keep their polygons (no triangulation) and their orientation; coordinates are taken in
 /// the scene's unit. A material's reflectance is its `Kd`. Errors name the OBJ line when known.
-ImportOutcome import_obj(const std::string& obj_text, const MtlSource& mtl);
+/// Refused when the file's vertices or faces exceed `budget`.
+ImportOutcome import_obj(const std::string& obj_text, const MtlSource& mtl,
+                         const ImportBudget& budget);
 
 }  // namespace radiant::proto

@@ -1,6 +1,7 @@
 #include "surface_import.h"
 
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "gltf_import.h"
@@ -23,19 +24,19 @@ ImportOutcome read_model(const ImportRequest& r) {
     std::string bytes;
     switch (r.kind) {
         case ImportKind::obj:
-            return import_obj(r.value, {r.mtl, std::nullopt});
+            return import_obj(r.value, {r.mtl, std::nullopt}, r.budget);
         case ImportKind::gltf: {
             const auto glb = decode_base64(r.value);
             if (!glb) return std::string("gltf must be a base64-encoded .glb file");
-            return import_gltf(*glb, r.unit, std::nullopt);
+            return import_gltf(*glb, r.unit, std::nullopt, r.budget);
         }
         case ImportKind::obj_file: {
             if (auto problem = read_model_file(r, path, bytes)) return *problem;
-            return import_obj(bytes, {r.mtl, path.parent_path()});
+            return import_obj(bytes, {r.mtl, path.parent_path()}, r.budget);
         }
         case ImportKind::gltf_file: {
             if (auto problem = read_model_file(r, path, bytes)) return *problem;
-            return import_gltf({bytes.begin(), bytes.end()}, r.unit, path.parent_path());
+            return import_gltf({bytes.begin(), bytes.end()}, r.unit, path.parent_path(), r.budget);
         }
     }
     return std::string("unknown import kind");
@@ -67,6 +68,7 @@ std::variant<ImportedSurfaces, std::string> import_surface(const ImportRequest& 
         return out;
     }
     std::set<std::string> names;
+    std::map<std::string, std::size_t> repeats;  ///< per name: how often it was taken
     for (const ImportedPart& part : model.parts) {
         if (!part.material) {
             return "some faces have no material in the model; give the surface a \"material\"" +
@@ -80,7 +82,15 @@ std::variant<ImportedSurfaces, std::string> import_surface(const ImportRequest& 
             }
         }
         std::string name = request.name + "/" + m.name;
-        while (!names.insert(name).second) name += "'";
+        if (!names.insert(name).second) {
+            // Numbered, not primed: many materials of one name must not grow names quadratically.
+            std::size_t& taken = repeats[name];
+            std::string numbered;
+            do {
+                numbered = name + " (" + std::to_string(++taken + 1) + ")";
+            } while (!names.insert(numbered).second);
+            name = std::move(numbered);
+        }
         Material& material = out.materials.emplace_back();
         material.name = name;
         material.reflectance = m.reflectance;

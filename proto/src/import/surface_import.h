@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "imported_geometry.h"
 #include "radiant/scene.h"
 
 namespace radiant::proto {
@@ -26,6 +27,7 @@ struct ImportRequest {
     LengthUnit unit = LengthUnit::m;      ///< the scene's
     std::optional<std::filesystem::path> scene_directory;  ///< none: file keys are refused
     std::size_t max_bytes = 0;                             ///< largest model file read
+    ImportBudget budget;  ///< what is left of the scene's vertex and face limits
 };
 
 /// The engine surfaces (one per material of the model, or one with the override material) and

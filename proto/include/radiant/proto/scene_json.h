@@ -8,18 +8,35 @@
 #include <string_view>
 #include <vector>
 
+#include "radiant/proto/json_budget.h"
 #include "radiant/scene.h"
 
 namespace radiant::proto {
 
 struct ParseLimits {
     std::size_t max_bytes = 64u << 20;  ///< larger documents are refused before parsing
-    SceneLimits scene;
+    JsonBudget json;                    ///< refused while parsing, before the DOM is complete
+    SceneLimits scene;                  ///< totals, refused before anything is expanded
+    /// Polygons, mesh faces and box sides of the whole scene, imported models included.
+    std::size_t max_faces = 4000000;
+};
+
+/// Problem lists stop at this many, and a last problem (pointer "") counts the rest: a hostile
+/// document with millions of bad values must not cost a message for each.
+constexpr std::size_t kMaxListedProblems = 100;
+
+/// What a refusal is about, so a service can answer with the fitting status.
+enum class Refusal {
+    none,
+    not_json,     ///< syntax, invalid UTF-8, a duplicate key, a number that overflows
+    over_budget,  ///< JSON over ParseLimits::max_bytes or ParseLimits::json
+    scene,        ///< a JSON document that is not a valid scene (scene limits included)
 };
 
 struct ParseOutcome {
     std::optional<Scene> scene;     ///< set only when `problems` is empty
     std::vector<Problem> problems;  ///< in document order: structure first, then check_scene
+    Refusal refusal = Refusal::none;
     bool ok() const { return problems.empty(); }
 };
 

@@ -1,7 +1,8 @@
 // The endpoint handlers of contract §4: plain functions from a request to a response, so tests
-// call them without sockets. They run on I/O threads and therefore never solve: they parse,
-// read or write the store and the queue, and return. Those that draw or convert a stored result
-// return their work instead (DeferredResponse), for the session to run on a BlockingPool.
+// call them without sockets. They never solve: they parse, read or write the store and the
+// queue, and return. Those that parse a scene run on ServiceContext::scene_pool, the rest on
+// the I/O threads. Those that draw or convert a stored result return their work instead
+// (DeferredResponse), for the session to run on a BlockingPool.
 #pragma once
 
 #include <cstddef>
@@ -10,6 +11,9 @@
 #include <map>
 #include <string>
 
+#include <boost/asio/thread_pool.hpp>
+
+#include "radiant/server/access_policy.h"
 #include "radiant/server/blocking_pool.h"
 #include "radiant/server/http.h"
 #include "radiant/server/job_queue.h"
@@ -24,6 +28,11 @@ struct ServiceContext {
     JobStore& store;
     Metrics& metrics;
     std::size_t max_body_bytes;
+    AccessPolicy access{};                  ///< token, Host and Origin checks
+    std::string listen_host = "127.0.0.1";  ///< the address listened on: a Host answered to
+    /// Runs the requests that parse a scene (Router::parses_scene), so that a large or hostile
+    /// body never holds an I/O thread; none: sessions run them inline.
+    boost::asio::thread_pool* scene_pool = nullptr;
     /// Where deferred work runs (main's pool); null: the caller runs it (tests without sockets).
     BlockingPool* blocking = nullptr;
 };

@@ -21,6 +21,9 @@ inline std::string_view to_std(boost::beast::string_view text) {
     return {text.data(), text.size()};
 }
 
+/// `%XX` escapes decoded (malformed ones kept as they are); `+` is a space only in a query.
+std::string percent_decode(std::string_view text, bool plus_is_space);
+
 /// `body` as application/json with the request's HTTP version and keep-alive.
 Response json_response(const Request& request, http::status status, const nlohmann::json& body);
 Response text_response(const Request& request, http::status status, std::string body,

@@ -52,9 +52,12 @@ struct JobRecord {
     UnixMillis created = 0, started = 0, finished = 0;
     JobProgress progress;
     std::string error;
+    /// The result's `warnings` (radiant-result/1): the scene's once its checks have run, all of
+    /// them when the job has finished.
+    nlohmann::json warnings = nlohmann::json::array();
 };
 
-/// {id, status, progress, created, started, finished[, error]}: GET /v1/jobs/{id}.
+/// {id, status, progress, created, started, finished, warnings[, error]}: GET /v1/jobs/{id}.
 nlohmann::json job_to_json(const JobRecord& job);
 
 /// A fresh random 128-bit id in hex. Thread-safe.

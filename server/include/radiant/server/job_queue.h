@@ -22,16 +22,24 @@
 namespace radiant::server {
 
 struct JobQueueOptions {
-    std::size_t workers = 1;            ///< concurrent solves; each solve uses `solve_threads`
-    std::size_t queue_limit = 64;       ///< queued (not running) jobs before POST answers 429
-    std::optional<double> job_seconds;  ///< per-job wall-clock cap on top of the scene's own
-    int solve_threads = 0;              ///< 0: all cores
+    std::size_t workers = 1;       ///< concurrent solves; each solve uses `solve_threads`
+    std::size_t queue_limit = 64;  ///< queued (not running) jobs before POST answers 429
+    /// Per-job wall-clock cap on top of the scene's own; the result is `stopped` at it.
+    std::optional<double> job_seconds;
+    /// Per-job memory budget of the solve (SolveOptions::max_memory_bytes); 0: half the physical
+    /// memory shared among the workers.
+    std::size_t job_memory_bytes = 0;
+    int solve_threads = 0;  ///< 0: all cores
 };
 
+/// A solve started this many times whose process died each time is not run again: it fails.
+inline constexpr int kMaxJobAttempts = 2;
+
 struct SubmitOutcome {
-    enum class Kind { accepted, replayed, queue_full, shutting_down };
+    enum class Kind { accepted, replayed, queue_full, shutting_down, store_unwritable };
     Kind kind = Kind::accepted;
-    JobRecord job;  ///< without scene_json; empty unless accepted or replayed
+    JobRecord job;       ///< without scene_json; empty unless accepted or replayed
+    std::string reason;  ///< store_unwritable: the store's error
 };
 
 /// What a running job's result documents need from its scene.
@@ -43,7 +51,8 @@ struct RunningScene {
 class JobQueue {
 public:
     /// Re-queues what the store holds as queued or running (an earlier process stopped before
-    /// finishing them), then starts the workers.
+    /// finishing them; see JobStore::requeue_unfinished for those it ends instead), then starts
+    /// the workers.
     JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options);
     /// Calls shutdown().
     ~JobQueue();
@@ -63,8 +72,9 @@ public:
     RunningScene running_scene(const std::string& id) const;
 
     /// Cancels: a queued job becomes cancelled at once; a running solve is asked to stop and
-    /// becomes cancelled within about a second, its best result kept. Finished jobs are left as
-    /// they are. Returns the job as it is now, or nothing for an unknown id. Thread-safe.
+    /// becomes cancelled within about a second, its best result kept. Either way the cancel is
+    /// in the store before this returns (throws StoreError when it cannot be). Finished jobs are
+    /// left as they are. Returns the job as it is now, or nothing for an unknown id. Thread-safe.
     std::optional<JobRecord> cancel(const std::string& id);
 
     std::size_t queue_length() const;
@@ -78,7 +88,15 @@ private:
     struct LiveJob;
     void work();
     void run(const std::shared_ptr<LiveJob>& job);
-    /// Writes running jobs' changed progress to the store about once a second.
+    /// Stores a finished job's outcome; when the store refuses it, the job fails with the reason,
+    /// in the store if a smaller write still fits, else in memory (unstored_).
+    void store_outcome(LiveJob& job, const JobRecord& outcome, const std::string& result_json,
+                       const std::optional<StoredMesh>& mesh);
+    /// A job the store could not follow ends failed in memory; the progress writer stores it
+    /// once the store takes writes again.
+    void fail_unstored(LiveJob& job, const std::string& why);
+    /// Writes running jobs' changed progress to the store about once a second, and retries
+    /// outcomes the store refused.
     void write_progress();
 
     JobStore& store_;
@@ -91,6 +109,8 @@ private:
     bool stopping_ = false;
     std::deque<std::shared_ptr<LiveJob>> queue_;
     std::unordered_map<std::string, std::shared_ptr<LiveJob>> live_;  ///< queued or running
+    /// Finished jobs whose final state the store refused (disk full); without their results.
+    std::unordered_map<std::string, JobRecord> unstored_;
     std::vector<std::thread> workers_;  ///< solvers and the progress writer
 };
 

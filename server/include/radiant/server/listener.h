@@ -1,10 +1,13 @@
 // Accepts TCP connections and hands each one to a Session.
 #pragma once
 
+#include <chrono>
+#include <cstddef>
 #include <memory>
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
 
 #include "radiant/server/router.h"
 #include "radiant/server/session.h"
@@ -24,8 +27,15 @@ public:
 
 private:
     void do_accept();
+    /// Out of file descriptors (or kernel memory), accept fails at once every time: accepting
+    /// again pauses, longer while it lasts, and the log gets one line a period, not one a try.
+    void pause_accepting(const boost::system::error_code& ec);
     boost::asio::io_context& ioc_;
     boost::asio::ip::tcp::acceptor acceptor_;
+    boost::asio::steady_timer pause_;  ///< on the acceptor's strand
+    std::chrono::milliseconds pause_length_{0};
+    std::chrono::steady_clock::time_point last_log_{};
+    std::size_t failures_since_log_ = 0;
     Router& router_;
     const SessionLimits limits_;
 };

@@ -6,9 +6,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "radiant/server/handlers.h"
 #include "radiant/server/http.h"
+#include "radiant/server/static_files.h"
 
 namespace radiant::server {
 
@@ -31,16 +33,23 @@ Query parse_query(std::string_view query);
 
 class Router {
 public:
-    explicit Router(ServiceContext& ctx) : ctx_(ctx) {}
+    /// `web`: the viewer's files, served at every path outside /v1, /healthz and /metrics.
+    explicit Router(ServiceContext& ctx, StaticFiles web = {}) : ctx_(ctx), web_(std::move(web)) {}
 
-    /// Never throws: an exception from a handler becomes a 500 with a JSON error body.
+    /// Never throws: an exception from a handler becomes a 500 with a JSON error body. Requests
+    /// the access policy refuses get their 401 or 403 before any handler runs.
     RouteResult route(const Request& request);
+
+    /// Whether routing `request` may parse a scene (a submitted body, a stored scene), which
+    /// takes time in proportion to its size: sessions run these on the scene pool.
+    static bool parses_scene(const Request& request);
 
     ServiceContext& context() { return ctx_; }
 
 private:
     RouteResult dispatch(const Request& request);
     ServiceContext& ctx_;
+    const StaticFiles web_;
 };
 
 }  // namespace radiant::server

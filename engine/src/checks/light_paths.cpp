@@ -1,0 +1,236 @@
+#include "checks/light_paths.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <tbb/parallel_for.h>
+
+#include "checks/side_hit.h"
+#include "formfactor/luminaire_light.h"
+#include "geometry/cosine_direction.h"
+#include "geometry/random.h"
+
+namespace radiant {
+namespace {
+
+// Each luminaire casts its share of kLightPaths, within these bounds: enough directions to see
+// what surrounds it, and no more than its share needs. With very many luminaires the lower bound
+// falls, so that the directions stay near kMaxLuminaireDirections in all.
+constexpr std::size_t kMinDirectionsPerLuminaire = 64;
+constexpr std::size_t kMaxDirectionsPerLuminaire = 1024;
+constexpr std::size_t kMaxLuminaireDirections = 1u << 18;
+// Emitting surfaces, when there are any, get at least this many paths.
+constexpr std::size_t kMinEmitterPaths = 256;
+// A path in a furnace of reflectance 0.99 bounces a hundred times on average; a few so long
+// change no share that matters, so they end here as absorbed.
+constexpr int kMaxBounces = 64;
+constexpr std::size_t kChunk = 256;
+// Key of the paths' sample streams.
+constexpr std::uint64_t kPathStream = 0x6c6f7373ull;
+
+struct PathStart {
+    Vec3 origin, direction;
+    double flux_lm = 0;
+    int luminaire = -1;  ///< −1: an emitting surface
+};
+
+struct Frame {
+    Vec3 t, b, n;
+};
+
+Frame frame_about(const Vec3& n) {
+    const Vec3 t =
+        normalized(std::abs(n.x) < 0.9 ? cross(n, Vec3{1, 0, 0}) : cross(n, Vec3{0, 1, 0}));
+    return {t, cross(n, t), n};
+}
+
+// Directions over the whole sphere with the lattice's pole on the aim, weighted by the
+// luminaire's intensity: a quadrature of its flux. Directions without light stay (they show
+// what surrounds the luminaire). A beam so narrow that no direction sees it goes along the aim.
+void luminaire_starts(const PreparedLuminaire& l, int index, std::size_t count,
+                      std::vector<PathStart>& out) {
+    const double flux = luminance(l.flux_lm);
+    const Frame f = frame_about(l.aim);
+    const std::size_t first = out.size();
+    double total = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        const Vec3 s = sphere_direction(k, count);
+        const Vec3 u = f.t * s.x + f.b * s.y + f.n * s.z;
+        const double intensity = std::max(0.0, intensity_per_lm(l, u));
+        out.push_back({l.position, u, intensity, index});
+        total += intensity;
+    }
+    if (!(total > 0)) {
+        for (std::size_t k = first; k < out.size(); ++k) out[k].flux_lm = 0;
+        if (flux > 0) out.push_back({l.position, l.aim, flux, index});
+        return;
+    }
+    for (std::size_t k = first; k < out.size(); ++k) out[k].flux_lm *= flux / total;
+}
+
+// Points drawn on the emitting triangles by power, leaving in cosine-distributed directions.
+void emitter_starts(const CheckedScene& input, double power_lm, std::size_t count,
+                    std::uint64_t seed, std::vector<PathStart>& out) {
+    const PreparedScene& scene = input.prepared;
+    std::vector<std::size_t> triangles;
+    std::vector<double> cdf;
+    double sum = 0;
+    for (std::size_t i = 0; i < input.triangles.size(); ++i) {
+        const Piece& p = scene.pieces[static_cast<std::size_t>(input.triangle_piece[i])];
+        const double exitance =
+            luminance(scene.materials[static_cast<std::size_t>(p.material)].exitance_lm_m2);
+        if (!(exitance > 0)) continue;
+        const Triangle& t = input.triangles[i];
+        sum += exitance * 0.5 * length(cross(t.b - t.a, t.c - t.a));
+        triangles.push_back(i);
+        cdf.push_back(sum);
+    }
+    if (!(sum > 0)) return;
+    const double eps = input.visibility.epsilon();
+    for (std::size_t k = 0; k < count; ++k) {
+        SampleStream rng(seed, kPathStream, ~std::uint64_t{0} - k);
+        const auto at = std::upper_bound(cdf.begin(), cdf.end(), rng.next() * sum);
+        const std::size_t i =
+            triangles[std::min(static_cast<std::size_t>(at - cdf.begin()), cdf.size() - 1)];
+        const Triangle& t = input.triangles[i];
+        const Vec3 n = scene.pieces[static_cast<std::size_t>(input.triangle_piece[i])].normal;
+        const double s = std::sqrt(rng.next()), r = rng.next();
+        const Vec3 x = t.a * (1 - s) + t.b * (s * (1 - r)) + t.c * (s * r);
+        out.push_back({x + n * eps, cosine_direction(n, rng.next(), rng.next()),
+                       power_lm / static_cast<double>(count), -1});
+    }
+}
+
+std::vector<PathStart> path_starts(const CheckedScene& input, double& emitted_lm) {
+    const PreparedScene& scene = input.prepared;
+    const EmittedLight emitted = emitted_light(scene);
+    const double emitter_lm = emitted.surfaces_lm;
+    emitted_lm = emitted.total_lm();
+    std::vector<PathStart> starts;
+    if (!(emitted_lm > 0)) return starts;
+    const std::size_t lowest = std::clamp<std::size_t>(
+        kMaxLuminaireDirections / std::max<std::size_t>(scene.luminaires.size(), 1), 4,
+        kMinDirectionsPerLuminaire);
+    for (std::size_t i = 0; i < scene.luminaires.size(); ++i) {
+        const double share = luminance(scene.luminaires[i].flux_lm) / emitted_lm;
+        const auto wanted = static_cast<std::size_t>(std::ceil(share * kLightPaths));
+        luminaire_starts(scene.luminaires[i], static_cast<int>(i),
+                         std::clamp(wanted, lowest, kMaxDirectionsPerLuminaire), starts);
+    }
+    if (emitter_lm > 0) {
+        const auto wanted =
+            static_cast<std::size_t>(std::ceil(emitter_lm / emitted_lm * kLightPaths));
+        emitter_starts(input, emitter_lm, std::max(wanted, kMinEmitterPaths), input.seed, starts);
+    }
+    return starts;
+}
+
+struct PathEnd {
+    SideHit first;
+    int lost_surface = -1;  ///< the surface whose black back took the path
+    bool escaped = false;
+};
+
+PathEnd trace(const CheckedScene& input, const PathStart& start, std::size_t index,
+              std::uint64_t& rays) {
+    const PreparedScene& scene = input.prepared;
+    SampleStream rng(input.seed, kPathStream, index);
+    Vec3 origin = start.origin, direction = start.direction;
+    PathEnd end;
+    for (int bounce = 0; bounce < kMaxBounces; ++bounce) {
+        ++rays;
+        const SideHit hit = side_hit(input, origin, direction);
+        if (bounce == 0) end.first = hit;
+        if (!(start.flux_lm > 0)) break;  // a direction without light: only its first hit counts
+        if (hit.escaped()) {
+            end.escaped = true;
+            break;
+        }
+        const Piece& piece = scene.pieces[static_cast<std::size_t>(hit.piece)];
+        if (hit.black) {
+            end.lost_surface = piece.surface;
+            break;
+        }
+        const double rho =
+            luminance(scene.materials[static_cast<std::size_t>(piece.material)].reflectance);
+        if (rng.next() >= rho) break;
+        const Vec3 n = hit.back ? -piece.normal : piece.normal;
+        origin = origin + direction * hit.t + n * input.visibility.epsilon();
+        direction = cosine_direction(n, rng.next(), rng.next());
+    }
+    return end;
+}
+
+}  // namespace
+
+LightPaths trace_light_paths(const CheckedScene& input, std::uint64_t& rays) {
+    LightPaths out;
+    const PreparedScene& scene = input.prepared;
+    out.luminaires.resize(scene.luminaires.size());
+    const std::vector<PathStart> starts = path_starts(input, out.emitted_lm);
+    if (starts.empty()) return out;
+
+    std::vector<PathEnd> ends(starts.size());
+    const std::size_t chunks = (starts.size() + kChunk - 1) / kChunk;
+    std::vector<std::uint64_t> chunk_rays(chunks, 0);
+    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+        for (std::size_t i = c * kChunk; i < std::min(starts.size(), (c + 1) * kChunk); ++i)
+            ends[i] = trace(input, starts[i], i, chunk_rays[c]);
+    });
+    for (const std::uint64_t r : chunk_rays) rays += r;
+
+    // In path order: the sums do not depend on which thread traced what.
+    std::vector<double> luminaire_lm(scene.luminaires.size(), 0.0);
+    std::vector<std::size_t> directions(scene.luminaires.size(), 0);
+    std::vector<std::map<int, double>> first_black(scene.luminaires.size());
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+        const PathStart& s = starts[i];
+        const PathEnd& e = ends[i];
+        if (e.escaped) out.escaped_lm += s.flux_lm;
+        if (e.lost_surface >= 0) out.lost.push_back({e.lost_surface, s.luminaire, s.flux_lm});
+        if (s.luminaire < 0) continue;
+        const auto l = static_cast<std::size_t>(s.luminaire);
+        luminaire_lm[l] += s.flux_lm;
+        LuminaireFirstHits& first = out.luminaires[l];
+        ++directions[l];
+        first.directions_escaped += e.first.escaped() ? 1 : 0;
+        first.directions_black += e.first.black ? 1 : 0;
+        if (e.first.escaped()) first.escaped += s.flux_lm;
+        if (e.first.black) {
+            first.black_back += s.flux_lm;
+            first_black[l][scene.pieces[static_cast<std::size_t>(e.first.piece)].surface] +=
+                s.flux_lm;
+        }
+    }
+    for (std::size_t l = 0; l < scene.luminaires.size(); ++l) {
+        LuminaireFirstHits& first = out.luminaires[l];
+        first.directions_escaped /= static_cast<double>(std::max<std::size_t>(directions[l], 1));
+        first.directions_black /= static_cast<double>(std::max<std::size_t>(directions[l], 1));
+        if (!(luminaire_lm[l] > 0)) continue;
+        first.escaped /= luminaire_lm[l];
+        first.black_back /= luminaire_lm[l];
+        for (const auto& [surface, lm] : first_black[l]) {
+            if (lm / luminaire_lm[l] > first.main_share) {
+                first.main_share = lm / luminaire_lm[l];
+                first.main_surface = surface;
+            }
+        }
+    }
+    return out;
+}
+
+std::vector<double> black_back_shares(const LightPaths& paths, std::size_t surfaces,
+                                      const std::vector<bool>& excluded) {
+    std::vector<double> share(surfaces, 0.0);
+    if (!(paths.emitted_lm > 0)) return share;
+    for (const LostPath& p : paths.lost) {
+        const bool skip = p.luminaire >= 0 &&
+                          static_cast<std::size_t>(p.luminaire) < excluded.size() &&
+                          excluded[static_cast<std::size_t>(p.luminaire)];
+        if (!skip) share[static_cast<std::size_t>(p.surface)] += p.flux_lm / paths.emitted_lm;
+    }
+    return share;
+}
+
+}  // namespace radiant

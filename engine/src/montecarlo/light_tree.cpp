@@ -1,0 +1,172 @@
+#include "montecarlo/light_tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace radiant {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A cluster that straddles x's horizon has its centre below it more often than not; some of it
+// is above, so it keeps a little importance.
+constexpr double kMinClusterCosine = 0.05;
+
+// Whether no point of `b` lies strictly in front of the plane through x with normal n: the
+// box's highest corner above the plane, from its centre and half extents (cheaper than eight).
+bool below_horizon(const Box& b, const Vec3& x, const Vec3& n) {
+    const Vec3 half = 0.5 * b.size();
+    return dot(n, b.centre() - x) + std::abs(n.x) * half.x + std::abs(n.y) * half.y +
+               std::abs(n.z) * half.z <=
+           0;
+}
+
+double squared_distance(const Box& b, const Vec3& x) {
+    double d2 = 0;
+    for (int a = 0; a < 3; ++a) {
+        const double d = std::max({b.lo[a] - x[a], 0.0, x[a] - b.hi[a]});
+        d2 += d * d;
+    }
+    return d2;
+}
+
+}  // namespace
+
+LightTree::LightTree(std::span<const LightTreeSource> sources) {
+    leaf_of_.assign(sources.size(), -1);
+    if (sources.empty()) return;
+    std::vector<std::size_t> order(sources.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    nodes_.reserve(2 * sources.size());
+    build(order, 0, order.size(), sources, -1);
+}
+
+int LightTree::build(std::vector<std::size_t>& order, std::size_t begin, std::size_t end,
+                     std::span<const LightTreeSource> sources, int parent) {
+    const int index = static_cast<int>(nodes_.size());
+    nodes_.emplace_back();
+    Node node;
+    node.parent = parent;
+    Box centres;
+    Vec3 weighted{0, 0, 0};
+    for (std::size_t i = begin; i < end; ++i) {
+        const LightTreeSource& s = sources[order[i]];
+        node.bounds.add(s.bounds.lo);
+        node.bounds.add(s.bounds.hi);
+        centres.add(s.bounds.centre());
+        weighted += s.bounds.centre() * s.power;
+        node.power += s.power;
+        node.peak_cd += s.peak_cd;
+    }
+    node.centre = node.power > 0 ? weighted / node.power : centres.centre();
+    if (end - begin == 1) {
+        node.source = order[begin];
+        leaf_of_[node.source] = index;
+        nodes_[static_cast<std::size_t>(index)] = node;
+        return index;
+    }
+    // Median split along the widest extent of the sources' centres.
+    const Vec3 extent = centres.size();
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const std::size_t middle = begin + (end - begin) / 2;
+    std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(begin),
+                     order.begin() + static_cast<std::ptrdiff_t>(middle),
+                     order.begin() + static_cast<std::ptrdiff_t>(end),
+                     [&](std::size_t a, std::size_t b) {
+                         return sources[a].bounds.centre()[axis] < sources[b].bounds.centre()[axis];
+                     });
+    node.left = build(order, begin, middle, sources, index);
+    node.right = build(order, middle, end, sources, index);
+    nodes_[static_cast<std::size_t>(index)] = node;
+    return index;
+}
+
+double LightTree::bound(const Node& node, const Vec3& x, const Vec3& n) const {
+    if (below_horizon(node.bounds, x, n)) return 0;
+    const double d2 = squared_distance(node.bounds, x);
+    return d2 > 0 ? node.peak_cd / d2 : kInf;
+}
+
+double LightTree::cluster_importance(const Node& node, const Vec3& x, const Vec3& n) const {
+    if (below_horizon(node.bounds, x, n)) return 0;
+    const Vec3 d = node.centre - x;
+    const double d2 = length_squared(d);
+    const double r2 = 0.25 * length_squared(node.bounds.size());
+    const double cosine = d2 > r2 ? std::max(kMinClusterCosine, dot(n, d) / std::sqrt(d2)) : 1.0;
+    return node.power * cosine / std::max(d2, r2);
+}
+
+LightCut LightTree::cut(const Vec3& x, const Vec3& n, double relative_bound,
+                        std::size_t max_nodes) const {
+    LightCut cut;
+    if (leaf_of_.size() <= max_nodes) {
+        for (std::size_t s = 0; s < leaf_of_.size(); ++s) cut.sources.push_back(s);
+        return cut;
+    }
+    // A max-heap of (bound, node); the finite bounds' sum is the scale a cluster is small
+    // against (an infinite bound, x inside a box, is always split).
+    std::vector<std::pair<double, int>> heap;
+    double finite_sum = 0;
+    auto push = [&](int node) {
+        const double b = bound(nodes_[static_cast<std::size_t>(node)], x, n);
+        if (!(b > 0)) return;
+        heap.emplace_back(b, node);
+        std::push_heap(heap.begin(), heap.end());
+        if (std::isfinite(b)) finite_sum += b;
+    };
+    push(0);
+    while (!heap.empty()) {
+        const auto [b, node] = heap.front();
+        const Node& v = nodes_[static_cast<std::size_t>(node)];
+        if (v.left >= 0 && ((std::isfinite(b) && b <= relative_bound * finite_sum) ||
+                            cut.sources.size() + heap.size() + 1 > max_nodes)) {
+            break;
+        }
+        std::pop_heap(heap.begin(), heap.end());
+        heap.pop_back();
+        if (v.left < 0) {
+            cut.sources.push_back(v.source);
+            continue;
+        }
+        if (std::isfinite(b)) finite_sum -= b;
+        push(v.left);
+        push(v.right);
+    }
+    for (const auto& [b, node] : heap) {
+        const Node& v = nodes_[static_cast<std::size_t>(node)];
+        if (v.left < 0) {
+            cut.sources.push_back(v.source);
+        } else {
+            cut.clusters.push_back(node);
+        }
+    }
+    std::sort(cut.sources.begin(), cut.sources.end());
+    std::sort(cut.clusters.begin(), cut.clusters.end());
+    return cut;
+}
+
+std::size_t LightTree::draw_by_power(int cluster, double r, double& probability) const {
+    int node = cluster;
+    probability = 1;
+    while (nodes_[static_cast<std::size_t>(node)].left >= 0) {
+        const Node& v = nodes_[static_cast<std::size_t>(node)];
+        const double wl = nodes_[static_cast<std::size_t>(v.left)].power;
+        const double wr = nodes_[static_cast<std::size_t>(v.right)].power;
+        const double pl = wl + wr > 0 ? wl / (wl + wr) : 0.5;
+        if (r < pl) {
+            r /= pl;
+            probability *= pl;
+            node = v.left;
+        } else {
+            r = (r - pl) / (1 - pl);
+            probability *= 1 - pl;
+            node = v.right;
+        }
+        r = std::min(r, 1.0 - 1e-16);
+    }
+    return nodes_[static_cast<std::size_t>(node)].source;
+}
+
+}  // namespace radiant

@@ -1,0 +1,191 @@
+// The light tree: its draws are the probabilities it reports, and the direct light it samples
+// on a hall of many sources is the exact direct light on average (none lost, none counted twice),
+// also where a wall hides half of them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include "formfactor/luminaire_light.h"
+#include "formfactor/point_polygon.h"
+#include "montecarlo/element_mesh.h"
+#include "montecarlo/light_sources.h"
+#include "montecarlo/light_tree.h"
+#include "scene/prepared_scene.h"
+#include "scene_builder.h"
+
+namespace radiant {
+namespace {
+
+std::vector<LightTreeSource> scattered_sources(int count) {
+    std::vector<LightTreeSource> out;
+    SampleStream rng(5, 0, 0);
+    for (int i = 0; i < count; ++i) {
+        const Vec3 c{10 * rng.next(), 10 * rng.next(), 2 + rng.next()};
+        Box b;
+        b.add(c - Vec3{0.2, 0.2, 0});
+        b.add(c + Vec3{0.2, 0.2, 0});
+        const double power = 100 + 1000 * rng.next();
+        out.push_back({b, power, power / 3});
+    }
+    return out;
+}
+
+TEST(LightTree, DrawsEachSourceWithTheProbabilityItReports) {
+    const std::vector<LightTreeSource> sources = scattered_sources(37);
+    const LightTree tree(sources);
+    const Vec3 x{3, 4, 0.8}, n{0, 0, 1};
+    const auto leaf = [&](std::size_t s) {
+        return sources[s].power / length_squared(sources[s].bounds.centre() - x);
+    };
+    double total = 0;
+    for (std::size_t s = 0; s < sources.size(); ++s) total += tree.probability(s, x, n, leaf);
+    EXPECT_NEAR(total, 1, 1e-12);
+
+    const int draws = 200000;
+    std::map<std::size_t, int> count;
+    for (int k = 0; k < draws; ++k) {
+        SampleStream rng(7, 1, static_cast<std::uint64_t>(k));
+        std::size_t s = 0;
+        double p = 0;
+        ASSERT_TRUE(tree.draw(x, n, rng.next(), leaf, s, p));
+        EXPECT_NEAR(p, tree.probability(s, x, n, leaf), 1e-12);
+        ++count[s];
+    }
+    for (std::size_t s = 0; s < sources.size(); ++s) {
+        const double p = tree.probability(s, x, n, leaf);
+        const double sigma = std::sqrt(p * (1 - p) / draws);
+        EXPECT_NEAR(static_cast<double>(count[s]) / draws, p, 5 * sigma + 1e-12) << "source " << s;
+    }
+}
+
+TEST(LightTree, CutsEverySourceInFrontOnceAndLeavesOutThoseBehind) {
+    std::vector<LightTreeSource> sources = scattered_sources(200);
+    const LightTree tree(sources);
+    const Vec3 x{5, 5, 2.5}, n{0, 0, 1};  // sources below z = 2.5 are behind
+    const LightCut cut = tree.cut(x, n, 0.01, 32);
+    EXPECT_LE(cut.sources.size() + cut.clusters.size(), 32u);
+    EXPECT_FALSE(cut.clusters.empty());
+    // Draw every cluster by power many times: the sources reached, with the cut's own, hold
+    // each source that is not wholly behind x once; one behind is at most in a cluster (where
+    // it sends nothing).
+    std::map<std::size_t, int> seen;
+    for (const std::size_t s : cut.sources) ++seen[s];
+    for (const int c : cut.clusters) {
+        std::map<std::size_t, bool> reached;
+        for (int k = 0; k < 20000; ++k) {
+            SampleStream rng(9, static_cast<std::uint64_t>(c), static_cast<std::uint64_t>(k));
+            double p = 0;
+            reached[tree.draw_by_power(c, rng.next(), p)] = true;
+        }
+        for (const auto& [s, yes] : reached) ++seen[s];
+    }
+    for (std::size_t s = 0; s < sources.size(); ++s) {
+        const bool in_front = sources[s].bounds.hi.z > x.z;
+        const int times = seen.count(s) ? seen[s] : 0;
+        if (in_front) {
+            EXPECT_EQ(times, 1) << "source " << s;
+        } else {
+            EXPECT_LE(times, 1) << "source " << s;
+        }
+    }
+}
+
+// A 16 × 8 m hall with 8 × 4 panels hung under its ceiling and a row of 12 downlights; with
+// `wall`, a wall at x = 8 splits it into two rooms.
+Scene hall(bool wall) {
+    Scene scene;
+    scene.name = "hall";
+    scene.materials = {testing::gray("wall", 0.5), testing::gray("panel", 0.5, 2000)};
+    scene.surfaces = testing::closed_room(16, 8, 3, "wall");
+    for (int i = 0; i < 8; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            const double x0 = 0.7 + 2 * i, y0 = 0.7 + 2 * j;
+            scene.surfaces.push_back(testing::polygon_surface(
+                "panel-" + std::to_string(i) + "-" + std::to_string(j), "panel",
+                testing::ceiling_rect(x0, x0 + 0.6, y0, y0 + 0.6, 2.95)));
+        }
+    }
+    for (int i = 0; i < 12; ++i) {
+        scene.luminaires.push_back(testing::luminaire("downlight-" + std::to_string(i),
+                                                      {0.5 + 1.25 * i + 0.1, 4, 2.5}, 800,
+                                                      Distribution::lambertian));
+    }
+    if (wall) {
+        scene.surfaces.push_back(testing::polygon_surface(
+            "wall-west-side", "wall", testing::rect({8, 0, 0}, {0, 0, 3}, {0, 8, 0})));
+        scene.surfaces.push_back(testing::polygon_surface(
+            "wall-east-side", "wall", testing::rect({8, 0, 0}, {0, 8, 0}, {0, 0, 3})));
+    }
+    scene.sensors.push_back(
+        testing::sensor_points("points", {{3.1, 2.3, 0.8}, {12.4, 6.1, 0.8}, {7.6, 4.2, 1.2}}));
+    return scene;
+}
+
+// The exact direct light at x: every source on x's side of the wall (or all), unoccluded.
+double exact_direct(const PreparedScene& scene, const Vec3& x, const Vec3& n, bool wall) {
+    const double wall_x = 8 - scene.world_origin.x;
+    const auto same_side = [&](const Vec3& p) { return !wall || (p.x < wall_x) == (x.x < wall_x); };
+    double sum = 0;
+    for (const PreparedLuminaire& l : scene.luminaires) {
+        if (same_side(l.position)) sum += l.flux_lm[0] * direct_kernel_per_lm(l, x, n);
+    }
+    for (const Piece& p : scene.pieces) {
+        const PreparedMaterial& m = scene.materials[static_cast<std::size_t>(p.material)];
+        if (!m.emits() || !same_side(p.vertices[0])) continue;
+        sum += m.exitance_lm_m2[0] * front_point_to_polygon_factor(x, n, p.vertices, p.normal);
+    }
+    return sum;
+}
+
+struct Mean {
+    double mean = 0, standard_error = 0;
+};
+
+template <class Sample>
+Mean mean_of(int n, const Sample& sample) {
+    double sum = 0, sum2 = 0;
+    for (int k = 0; k < n; ++k) {
+        const double v = sample(k);
+        sum += v;
+        sum2 += v * v;
+    }
+    const double mean = sum / n;
+    return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n)};
+}
+
+TEST(LightSources, SampleTheExactDirectLightOfManySourcesOnAverage) {
+    for (const bool wall : {false, true}) {
+        const PreparedScene scene = prepare_scene(hall(wall));
+        const ElementMesh mesh(scene, 1.0);
+        const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
+        const LightSources sources(scene, visibility->epsilon());
+        const Vec3 up{0, 0, 1};
+        for (const Vec3& x : scene.sensors[0].points) {
+            const double exact = exact_direct(scene, x, up, wall);
+            std::uint64_t rays = 0;
+            const LightSources::SensorSources seen =
+                sources.sensor_sources(x, up, *visibility, rays);
+            EXPECT_FALSE(seen.clusters.empty());  // 44 sources: more than a cut holds
+            const Mean at_sensor = mean_of(2000, [&](int k) {
+                SampleStream rng(11, 0, static_cast<std::uint64_t>(k));
+                return seen.luminaires[0] +
+                       sources.sensor_set_light(seen, x, up, *visibility, rng, 4, rays)[0];
+            });
+            EXPECT_NEAR(at_sensor.mean, exact, 4 * at_sensor.standard_error + 1e-9 * exact)
+                << "sensor, wall " << wall;
+            EXPECT_LT(at_sensor.standard_error, 0.01 * exact);
+            const Mean by_draws = mean_of(20000, [&](int k) {
+                SampleStream rng(13, 0, static_cast<std::uint64_t>(k));
+                return sources.direct_at(x, up, *visibility, rng, rays)[0];
+            });
+            EXPECT_NEAR(by_draws.mean, exact, 4 * by_draws.standard_error + 1e-9 * exact)
+                << "next-event draws, wall " << wall;
+            EXPECT_LT(by_draws.standard_error, 0.02 * exact);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace radiant

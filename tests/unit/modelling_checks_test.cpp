@@ -1,0 +1,248 @@
+// The modelling checks (radiant/warnings.h): each mistake of tests/data/warnings gives its
+// warning, naming what it is about; strict solves refuse them before solving; and no validation
+// scene or example gives any warning at all.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "radiant/proto/honeybee.h"
+#include "radiant/proto/result_json.h"
+#include "radiant/proto/scene_json.h"
+#include "radiant/solve.h"
+#include "radiant/warnings.h"
+#include "scene_builder.h"
+#include "test_files.h"
+
+namespace radiant {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+fs::path warnings_dir() { return fs::path(RADIANT_TEST_DATA) / "warnings"; }
+
+Scene load(const fs::path& file) {
+    proto::ParseOutcome outcome = proto::load_scene_file(file);
+    EXPECT_TRUE(outcome.ok()) << file << ": " << (outcome.ok() ? "" : outcome.problems[0].message);
+    return outcome.ok() ? std::move(*outcome.scene) : Scene{};
+}
+
+std::set<std::pair<std::string, std::string>> codes_and_pointers(const std::vector<Warning>& ws) {
+    std::set<std::pair<std::string, std::string>> out;
+    for (const Warning& w : ws) out.insert({w.code, w.pointer});
+    return out;
+}
+
+std::string listed(const std::vector<Warning>& warnings) {
+    return warnings.empty() ? "none" : describe_warnings(warnings);
+}
+
+/// The scenes that model rooms as meant: the validation scenes, the box rooms, the RADIANCE
+/// comparison room, the picture scene and every example.
+std::vector<fs::path> validation_scenes_and_examples() {
+    const fs::path data = RADIANT_TEST_DATA,
+                   examples = fs::path(RADIANT_SOURCE_DIR) / "proto/examples";
+    std::vector<fs::path> files;
+    for (const fs::path& dir :
+         {data / "scenes", data / "box_rooms", data / "radiance", data / "pictures", examples,
+          examples / "furnished-office", examples / "furnished-office-clutter"}) {
+        const auto more = test::json_files(dir);
+        files.insert(files.end(), more.begin(), more.end());
+    }
+    return files;
+}
+
+TEST(ModellingChecks, EachMistakeGivesItsWarningNamingWhatItIsAbout) {
+    const json expected = json::parse(test::read_text(warnings_dir() / "expected.json"));
+    const auto files = test::json_files(warnings_dir());
+    ASSERT_EQ(files.size(), expected.size()) << "every mistake scene needs an expectation";
+    for (const fs::path& file : files) {
+        SCOPED_TRACE(file.filename().string());
+        const std::vector<Warning> got = check_modelling(load(file));
+        std::set<std::pair<std::string, std::string>> want;
+        for (const json& w : expected.at(file.filename().string())) {
+            const std::string code = w.at("code"), pointer = w.at("pointer");
+            want.insert({code, pointer});
+            const auto it = std::find_if(got.begin(), got.end(), [&](const Warning& g) {
+                return g.code == code && g.pointer == pointer;
+            });
+            if (it == got.end()) continue;  // reported by the comparison below
+            for (const std::string name : w.at("names")) {
+                EXPECT_NE(it->message.find(name), std::string::npos)
+                    << it->message << " does not name " << name;
+            }
+        }
+        EXPECT_EQ(codes_and_pointers(got), want) << listed(got);
+    }
+}
+
+TEST(ModellingChecks, ValidationScenesAndExamplesGiveNoWarning) {
+    const auto files = validation_scenes_and_examples();
+    ASSERT_GE(files.size(), 20u);
+    for (const fs::path& file : files) {
+        EXPECT_TRUE(check_modelling(load(file)).empty())
+            << file << ": " << listed(check_modelling(load(file)));
+    }
+}
+
+TEST(ModellingChecks, ValidationScenesAlsoInTheSharedDirectoryGiveNoWarning) {
+    // The validation scenes as the project shares them outside the repository, where present.
+    const fs::path shared = "/work/shared/validation/scenes";
+    if (!fs::is_directory(shared)) GTEST_SKIP() << shared << " is not on this machine";
+    for (const fs::path& file : test::json_files(shared)) {
+        EXPECT_TRUE(check_modelling(load(file)).empty()) << file;
+    }
+}
+
+TEST(ModellingChecks, AHoneybeeImportHasNoLight) {
+    const proto::HoneybeeOutcome imported = proto::honeybee_to_scene(
+        test::read_text(fs::path(RADIANT_TEST_DATA) / "honeybee/office-window.hbjson"));
+    ASSERT_TRUE(imported.scene);
+    const proto::ParseOutcome parsed = proto::parse_scene(imported.scene->dump());
+    ASSERT_TRUE(parsed.ok());
+    const std::vector<Warning> got = check_modelling(*parsed.scene);
+    EXPECT_EQ(codes_and_pointers(got),
+              (std::set<std::pair<std::string, std::string>>{{"no_light", "/luminaires"}}))
+        << listed(got);
+}
+
+// An imported model's surfaces are named by the document surface that imports them.
+TEST(ModellingChecks, WarningsPointAtTheDocumentsSurfaces) {
+    const Scene scene = load(warnings_dir() / "ceiling-wound-wrong.json");
+    for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+        EXPECT_EQ(scene.surfaces[i].pointer, "/surfaces/" + std::to_string(i));
+    }
+    Scene built = scene;
+    for (Surface& s : built.surfaces) s.pointer = "/surfaces/9";
+    const std::vector<Warning> got = check_modelling(built);
+    ASSERT_EQ(got.size(), 1u) << listed(got);
+    EXPECT_EQ(got[0].pointer, "/surfaces/9");
+}
+
+TEST(ModellingChecks, SolvedResultsCarryTheWarningsAndJsonAlwaysHasThem) {
+    SolveOptions options;
+    options.tolerance = 0.1;
+    const Result warned = solve(load(warnings_dir() / "ceiling-wound-wrong.json"), options);
+    EXPECT_EQ(warned.status, SolveStatus::converged) << warned.error;
+    EXPECT_EQ(codes_and_pointers(warned.warnings),
+              (std::set<std::pair<std::string, std::string>>{{"back_face_light", "/surfaces/5"}}))
+        << listed(warned.warnings);
+    const json doc = proto::result_to_json(warned);
+    ASSERT_EQ(doc["warnings"].size(), 1u);
+    EXPECT_EQ(doc["warnings"][0]["code"], "back_face_light");
+    EXPECT_EQ(doc["warnings"][0]["pointer"], "/surfaces/5");
+
+    const Result clean =
+        solve(load(fs::path(RADIANT_SOURCE_DIR) / "proto/examples/simple-room.json"), options);
+    EXPECT_TRUE(clean.warnings.empty()) << listed(clean.warnings);
+    EXPECT_EQ(proto::result_to_json(clean)["warnings"], json::array());
+    Result failed;
+    EXPECT_EQ(proto::result_to_json(failed)["warnings"], json::array());
+}
+
+/// The stages a solve reported, and the warnings it announced before solving.
+class StageRecorder : public SolveObserver {
+public:
+    void on_progress(const Progress& p) override { stages.insert(p.stage); }
+    void on_warnings(const std::vector<Warning>& w) override { announced = w; }
+    std::set<std::string> stages;
+    std::vector<Warning> announced;
+};
+
+// Strict: every mistake refuses before any solving stage runs, with its warnings.
+TEST(ModellingChecks, StrictSolvesRefuseEveryMistakeBeforeSolving) {
+    SolveOptions options;
+    options.strict = true;
+    for (const fs::path& file : test::json_files(warnings_dir())) {
+        SCOPED_TRACE(file.filename().string());
+        StageRecorder recorder;
+        const Result r = solve(load(file), options, &recorder);
+        EXPECT_EQ(r.status, SolveStatus::failed);
+        EXPECT_EQ(r.error.rfind("strict: ", 0), 0u) << r.error;
+        EXPECT_FALSE(r.warnings.empty());
+        EXPECT_NE(r.error.find(r.warnings[0].pointer), std::string::npos) << r.error;
+        EXPECT_EQ(codes_and_pointers(recorder.announced), codes_and_pointers(r.warnings));
+        EXPECT_EQ(recorder.stages, std::set<std::string>{"meshing"}) << "only the preparation";
+        EXPECT_TRUE(r.sensors.empty());
+    }
+    // settings.strict is the same switch.
+    Scene scene = load(warnings_dir() / "no-light.json");
+    scene.settings.strict = true;
+    EXPECT_EQ(solve(scene, options_from(scene.settings)).status, SolveStatus::failed);
+    scene = load(fs::path(RADIANT_SOURCE_DIR) / "proto/examples/simple-room.json");
+    scene.settings.strict = true;
+    scene.settings.tolerance = 0.1;
+    const Result clean = solve(scene, options_from(scene.settings));
+    EXPECT_EQ(clean.status, SolveStatus::converged) << clean.error;
+}
+
+TEST(ModellingChecks, TimeLimitIsAWarningAndStrictMakesItAFailure) {
+    Scene scene = load(warnings_dir() / "desks-facing-in.json");
+    scene.surfaces.resize(1);  // the room alone: no modelling warning
+    SolveOptions options;
+    options.tolerance = 0.001;
+    options.max_seconds = 0.02;
+    const Result stopped = solve(scene, options);
+    ASSERT_EQ(stopped.status, SolveStatus::stopped) << stopped.error;
+    EXPECT_EQ(
+        codes_and_pointers(stopped.warnings),
+        (std::set<std::pair<std::string, std::string>>{{"time_limit", "/settings/max_seconds"}}))
+        << listed(stopped.warnings);
+    options.strict = true;
+    const Result failed = solve(scene, options);
+    EXPECT_EQ(failed.status, SolveStatus::failed);
+    EXPECT_NE(failed.error.find("time_limit"), std::string::npos) << failed.error;
+    // A cancel is the user's own doing: no warning.
+    CancellationToken cancel;
+    cancel.cancel();
+    options.strict = false;
+    options.max_seconds.reset();
+    const Result cancelled = solve(scene, options, nullptr, &cancel);
+    EXPECT_TRUE(cancelled.warnings.empty()) << listed(cancelled.warnings);
+}
+
+TEST(ModellingChecks, SettingsStrictIsReadAndChecked) {
+    const std::string scene =
+        R"({"format": "radiant-scene/1", "materials": {"w": {"reflectance": 0.5}},
+            "surfaces": [{"name": "r", "material": "w", "box": {"min": [0,0,0], "max": [1,1,1]}}],
+            "settings": {"strict": )";
+    const proto::ParseOutcome on = proto::parse_scene(scene + "true}}");
+    ASSERT_TRUE(on.ok());
+    EXPECT_TRUE(on.scene->settings.strict);
+    EXPECT_TRUE(options_from(on.scene->settings).strict);
+    const proto::ParseOutcome bad = proto::parse_scene(scene + "\"yes\"}}");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.problems[0].pointer, "/settings/strict");
+}
+
+// docs/warnings.md documents exactly the codes the result schema allows, and the mistake
+// scenes use only those.
+TEST(ModellingChecks, DocumentedCodesAreTheSchemasCodes) {
+    const json schema = json::parse(
+        test::read_text(fs::path(RADIANT_SOURCE_DIR) / "proto/schema/result.schema.json"));
+    std::set<std::string> allowed;
+    for (const std::string code : schema["$defs"]["warning"]["properties"]["code"]["enum"])
+        allowed.insert(code);
+    std::set<std::string> documented;
+    std::istringstream doc(test::read_text(fs::path(RADIANT_SOURCE_DIR) / "docs/warnings.md"));
+    std::string line;
+    bool in_table = false;
+    while (std::getline(doc, line)) {
+        if (line.rfind("## ", 0) == 0) in_table = line == "## The codes";
+        if (in_table && line.rfind("| `", 0) == 0)
+            documented.insert(line.substr(3, line.find('`', 3) - 3));
+    }
+    EXPECT_EQ(documented, allowed);
+    const json expected = json::parse(test::read_text(warnings_dir() / "expected.json"));
+    for (const auto& [file, warnings] : expected.items()) {
+        for (const json& w : warnings) EXPECT_TRUE(allowed.contains(w.at("code"))) << file;
+    }
+}
+
+}  // namespace
+}  // namespace radiant
