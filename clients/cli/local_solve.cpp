@@ -11,6 +11,7 @@
 #include <mutex>
 
 #include "exit_codes.h"
+#include "progress_text.h"
 #include "radiant/proto/scene_json.h"
 #include "radiant/proto/warnings_json.h"
 #include "radiant/solve.h"
@@ -56,8 +57,9 @@ public:
         if (printed_ && now - last_ < std::chrono::milliseconds(100) && p.fraction < 1) return;
         last_ = now;
         printed_ = true;
-        std::fprintf(stderr, "\r%-12s %5.1f%%  it %zu  err %.2e  %.1fs   ", p.stage.c_str(),
-                     100 * p.fraction, p.iterations, p.error_estimate, p.elapsed_seconds);
+        std::fprintf(stderr, "\r%-12s %5.1f%%  it %zu  err %s  %.1fs   ", p.stage.c_str(),
+                     100 * p.fraction, p.iterations, estimate_text(p.error_estimate).c_str(),
+                     p.elapsed_seconds);
         std::fflush(stderr);
     }
 
@@ -79,12 +81,7 @@ public:
         std::fprintf(stderr, "snapshot %3llu%s %7.2f s  %-12s",
                      static_cast<unsigned long long>(s.version), s.final ? " (final)" : "",
                      p.elapsed_seconds, p.stage.c_str());
-        // Before the first sweep there is no error bound yet.
-        if (p.iterations > 0 || s.final) {
-            std::fprintf(stderr, " error %.2e", p.error_estimate);
-        } else {
-            std::fprintf(stderr, " error    -    ");
-        }
+        std::fprintf(stderr, " error %s", estimate_text(p.error_estimate).c_str());
         std::fprintf(stderr, "  rays %llu  elements %zu  links %zu",
                      static_cast<unsigned long long>(p.rays), p.elements, p.links);
         if (s.sensors) {
@@ -109,32 +106,34 @@ bool report_failed_solve(const Result& result) {
 
 }  // namespace
 
-void add_solve_flags(CLI::App& command, SolveFlags& flags) {
-    command.add_option("--tolerance", flags.tolerance, "target relative error, in (0, 1)")
-        ->check(CLI::Validator(
-            [](const std::string& s) -> std::string {
-                double t = 0;
-                const bool number = CLI::detail::lexical_cast(s, t);
-                return number && t > 0 && t < 1 ? "" : "tolerance must be in (0, 1)";
-            },
-            "(0,1)"));
-    command.add_option("--max-seconds", flags.max_seconds, "wall-clock budget")
-        ->check(CLI::PositiveNumber);
-    command.add_option("--threads", flags.threads, "worker threads, 0 for all cores")
-        ->check(CLI::NonNegativeNumber);
-    command.add_option("--seed", flags.seed, "sampling seed (results repeat for a seed)");
-    command.add_option("--method", flags.method, "solver")->check(CLI::IsMember(solver_names()));
-    command
-        .add_option("--max-memory-mb", flags.max_memory_mb,
-                    "memory budget of the whole process: reading the scene and solving it "
-                    "(default: half the physical memory for the solve)")
-        ->check(CLI::PositiveNumber);
-    command.add_flag("--strict", flags.strict,
-                     "warnings are errors: exit 2 and write nothing when the scene or the solve "
-                     "has any");
-    command.add_flag("--progress", flags.progress,
-                     "print every progressive snapshot (error, rays, elements, links, sensor "
-                     "averages) as a line on stderr");
+std::vector<CLI::Option*> add_solve_flags(CLI::App& command, SolveFlags& flags) {
+    return {
+        command.add_option("--tolerance", flags.tolerance, "target relative error, in (0, 1)")
+            ->check(CLI::Validator(
+                [](const std::string& s) -> std::string {
+                    double t = 0;
+                    const bool number = CLI::detail::lexical_cast(s, t);
+                    return number && t > 0 && t < 1 ? "" : "tolerance must be in (0, 1)";
+                },
+                "(0,1)")),
+        command.add_option("--max-seconds", flags.max_seconds, "wall-clock budget")
+            ->check(CLI::PositiveNumber),
+        command.add_option("--threads", flags.threads, "worker threads, 0 for all cores")
+            ->check(CLI::NonNegativeNumber),
+        command.add_option("--seed", flags.seed, "sampling seed (results repeat for a seed)"),
+        command.add_option("--method", flags.method, "solver")
+            ->check(CLI::IsMember(solver_names())),
+        command
+            .add_option("--max-memory-mb", flags.max_memory_mb,
+                        "memory budget of the whole process: reading the scene and solving it "
+                        "(default: half the physical memory for the solve)")
+            ->check(CLI::PositiveNumber),
+        command.add_flag("--strict", flags.strict,
+                         "warnings are errors: exit 2 and write nothing when the scene or the "
+                         "solve has any"),
+        command.add_flag("--progress", flags.progress,
+                         "print every progressive snapshot (error, rays, elements, links, sensor "
+                         "averages) as a line on stderr")};
 }
 
 std::optional<Scene> load_checked_scene(const std::string& scene_file, const SolveFlags& flags) {

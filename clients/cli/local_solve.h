@@ -27,8 +27,8 @@ struct SolveFlags {
 };
 
 /// Registers --tolerance, --max-seconds, --threads, --seed, --method, --max-memory-mb,
-/// --progress and --strict on a subcommand.
-void add_solve_flags(CLI::App& command, SolveFlags& flags);
+/// --strict and --progress on a subcommand; returns them.
+std::vector<CLI::Option*> add_solve_flags(CLI::App& command, SolveFlags& flags);
 
 /// Loads and checks `scene_file`; on problems prints them (`FILE: /pointer: message`) and gives
 /// nothing, so commands can check their own arguments against the scene before solving. With

@@ -12,9 +12,8 @@
 #include "atomic_file.h"
 #include "exit_codes.h"
 #include "local_solve.h"
-#include "picture/false_colour.h"
-#include "picture/room_view.h"
-#include "picture/vertex_illuminance.h"
+#include "radiant/picture/room_view.h"
+#include "stored_result.h"
 
 namespace radiant::cli {
 namespace {
@@ -22,6 +21,7 @@ namespace {
 struct RenderArgs {
     std::string scene;
     std::string out;
+    std::string result;  ///< a solved result to draw instead of solving
     SolveFlags flags;
     std::optional<std::array<double, 3>> eye, target;
     std::array<double, 3> up{0, 0, 1};
@@ -40,7 +40,7 @@ Vec3 to_metres(const std::array<double, 3>& a, const Scene& scene) {
 }
 
 /// The camera from the arguments; what they leave open comes from `fallback`.
-Camera camera_from(const RenderArgs& args, const Scene& scene, Camera fallback) {
+picture::Camera camera_from(const RenderArgs& args, const Scene& scene, picture::Camera fallback) {
     if (args.eye) fallback.eye = to_metres(*args.eye, scene);
     if (args.target) fallback.target = to_metres(*args.target, scene);
     fallback.up = vec(args.up);
@@ -55,38 +55,34 @@ int run_render(const RenderArgs& args) {
     if (!scene) return kExitBadInput;
     // A camera given in full is checked before solving, so a bad one costs no solve.
     if (args.eye && args.target) {
-        if (auto problem = camera_problem(camera_from(args, *scene, {}))) {
+        if (auto problem = picture::camera_problem(camera_from(args, *scene, {}))) {
             std::cerr << "radiant: " << *problem << '\n';
             return kExitBadInput;
         }
     }
-    const Result result = solve_locally(*scene, args.flags, true);
-    if (const auto code = report_solve(args.scene, *scene, args.flags, result)) return *code;
-    if (!result.mesh) {
-        std::cerr << "radiant: the solve returned no mesh to render\n";
-        return kExitFailure;
+    // The solved result to draw: the --result file, or a solve of the scene now.
+    std::optional<Result> result;
+    if (args.result.empty()) {
+        result = solve_locally(*scene, args.flags, true);
+        if (const auto code = report_solve(args.scene, *scene, args.flags, *result)) return *code;
+        if (!result->mesh) {
+            std::cerr << "radiant: the solve returned no mesh to render\n";
+            return kExitFailure;
+        }
+    } else {
+        result = load_stored_result(args.result, *scene, true);
+        if (!result) return kExitBadInput;
     }
-    const SolvedMesh& mesh = *result.mesh;
-    const Camera camera = camera_from(args, *scene, default_camera(mesh));
-    ViewHits hits;
+    const picture::Camera camera =
+        camera_from(args, *scene, picture::default_camera(*result->mesh));
     try {
-        hits = cast_view(mesh, camera);
+        const picture::Image image = picture::draw_view(
+            *result, *scene, camera, {args.falsecolor, args.max_lux, args.exposure});
+        write_file_atomically(args.out, image.png());
     } catch (const std::invalid_argument& e) {
         std::cerr << "radiant: " << e.what() << '\n';
         return kExitBadInput;
     }
-    Image image(1, 1, {});
-    if (args.falsecolor) {
-        const std::vector<double> lux = vertex_illuminance(result, *scene);
-        double max = args.max_lux;
-        if (!(max > 0) && !lux.empty()) {
-            max = round_scale_max(*std::max_element(lux.begin(), lux.end()));
-        }
-        image = false_colour_view(mesh, lux, hits, max, "lux");
-    } else {
-        image = luminance_view(mesh, hits, args.exposure);
-    }
-    write_file_atomically(args.out, image.png());
     return kExitOk;
 }
 
@@ -94,11 +90,13 @@ int run_render(const RenderArgs& args) {
 
 void add_render_command(CLI::App& app, int& exit_code) {
     auto* cmd = app.add_subcommand(
-        "render", "Solve a scene and write a perspective picture of it as PNG (--falsecolor: lux)");
+        "render",
+        "Solve a scene (or read --result) and write a perspective picture of it as PNG "
+        "(--falsecolor: lux)");
     auto args = std::make_shared<RenderArgs>();
     cmd->add_option("scene", args->scene, "radiant-scene/1 JSON file")->required();
     cmd->add_option("--out", args->out, "the PNG file to write")->required();
-    add_solve_flags(*cmd, args->flags);
+    add_result_option(*cmd, args->result, add_solve_flags(*cmd, args->flags));
     cmd->add_option("--eye", args->eye,
                     "camera position X Y Z in scene units (default: inside "
                     "the bounding box, near a lower corner)");

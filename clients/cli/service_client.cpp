@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "exit_codes.h"
+#include "progress_text.h"
 
 namespace radiant::cli {
 
@@ -79,15 +80,7 @@ std::string watch_job(const ServerUrl& server, const std::string& id) {
                 return false;
             }
             if (event == "progress" && tty) {
-                constexpr int kWidth = 30;
-                const double fraction = json.value("fraction", 0.0);
-                const int filled = static_cast<int>(fraction * kWidth + 0.5);
-                std::fprintf(stderr, "\r[%s%s] %5.1f%%  %-12s it %-6zu err %.1e  %.1fs ",
-                             std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                             std::string(static_cast<std::size_t>(kWidth - filled), '-').c_str(),
-                             100 * fraction, json.value("stage", "").c_str(),
-                             json.value("iterations", std::size_t{0}),
-                             json.value("error_estimate", 0.0), json.value("elapsed_seconds", 0.0));
+                std::fprintf(stderr, "\r%s", service_progress_line(json).c_str());
                 std::fflush(stderr);
                 drawn = true;
             }

@@ -2,6 +2,7 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "atomic_file.h"
@@ -9,6 +10,7 @@
 #include "local_solve.h"
 #include "radiant/proto/result_gltf.h"
 #include "radiant/proto/result_json.h"
+#include "radiant/proto/sensors_csv.h"
 
 namespace radiant::cli {
 namespace {
@@ -17,8 +19,10 @@ struct SolveArgs {
     std::string scene;
     std::string out;
     std::string gltf;
+    std::string csv;
     SolveFlags flags;
     bool mesh = false;
+    std::optional<int> digits;  ///< overrides the scene's settings.digits
 };
 
 int run_solve(const SolveArgs& args) {
@@ -36,7 +40,11 @@ int run_solve(const SolveArgs& args) {
         write_file_atomically(args.gltf, proto::result_to_glb(result, *scene));
     }
     if (!args.mesh) result.mesh.reset();  // requested for the glTF only
-    const std::string text = proto::result_to_json(result).dump(2) + "\n";
+    const int digits = args.digits.value_or(scene->settings.digits);
+    if (!args.csv.empty() && result.status != SolveStatus::failed) {
+        write_file_atomically(args.csv, proto::sensors_csv(result.sensors, digits));
+    }
+    const std::string text = proto::result_to_json(result, digits).dump(2) + "\n";
     if (args.out.empty()) {
         std::cout << text << std::flush;
     } else {
@@ -57,6 +65,13 @@ void add_solve_command(CLI::App& app, int& exit_code) {
     cmd->add_flag("--mesh", args->mesh, "include the solved mesh in the result");
     cmd->add_option("--gltf", args->gltf,
                     "also write the solved mesh and sensors as binary glTF (.glb) here");
+    cmd->add_option("--csv", args->csv,
+                    "also write every sensor point (set, index, x, y, z, nx, ny, nz, lux) as CSV "
+                    "here");
+    cmd->add_option("--digits", args->digits,
+                    "significant digits of the result's values (17: unrounded; default: the "
+                    "scene's settings.digits, else 4)")
+        ->check(CLI::Range(1, 17));
     cmd->callback([args, &exit_code] { exit_code = run_solve(*args); });
 }
 

@@ -2,15 +2,15 @@
 
 #include <algorithm>
 
-#include "picture/false_colour.h"
+#include "radiant/picture/false_colour.h"
 
 namespace radiant::cli {
 namespace {
 
-PlanVerdict::Mark mark_of(Check::Status status) {
-    return status == Check::Status::pass   ? PlanVerdict::Mark::pass
-           : status == Check::Status::fail ? PlanVerdict::Mark::fail
-                                           : PlanVerdict::Mark::unknown;
+picture::PlanVerdict::Mark mark_of(Check::Status status) {
+    return status == Check::Status::pass   ? picture::PlanVerdict::Mark::pass
+           : status == Check::Status::fail ? picture::PlanVerdict::Mark::fail
+                                           : picture::PlanVerdict::Mark::unknown;
 }
 
 std::string status_word(Check::Status status) {
@@ -29,9 +29,9 @@ std::string check_line(const Check& c) {
     std::string text =
         name + " " +
         (c.status == Check::Status::unknown && !c.note.empty() ? std::string("?")
-                                                               : short_number(c.value)) +
+                                                               : picture::short_number(c.value)) +
         (c.criterion == "em_lx" ? " lx" : "") + (at_most ? " <= " : " >= ") +
-        short_number(c.required) + ": " + status_word(c.status);
+        picture::short_number(c.required) + ": " + status_word(c.status);
     if (!c.observer.empty()) text += " (" + c.observer + ")";
     return text;
 }
@@ -39,7 +39,7 @@ std::string check_line(const Check& c) {
 }  // namespace
 
 void add_task_area_marks(const Scene& scene, const Result& result, std::size_t set,
-                         SensorPlan& plan) {
+                         picture::SensorPlan& plan) {
     const SensorSet& task = scene.sensors[set];
     const SensorResult& solved = result.sensors[set];
     if (!solved.compliance) return;

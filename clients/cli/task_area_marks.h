@@ -4,7 +4,7 @@
 
 #include <cstddef>
 
-#include "picture/sensor_plan.h"
+#include "radiant/picture/sensor_plan.h"
 #include "radiant/result.h"
 #include "radiant/scene.h"
 
@@ -13,6 +13,6 @@ namespace radiant::cli {
 /// Adds the marks of sensor set `set` of `scene` (expanded, as solved) to `plan`, from `result`;
 /// a set without a requirement gets none.
 void add_task_area_marks(const Scene& scene, const Result& result, std::size_t set,
-                         SensorPlan& plan);
+                         picture::SensorPlan& plan);
 
 }  // namespace radiant::cli

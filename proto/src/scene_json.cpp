@@ -13,6 +13,7 @@
 #include "json_text.h"
 #include "photometry/ies_reader.h"
 #include "photometry/ldt_reader.h"
+#include "radiant/proto/significant_digits.h"
 #include "radiant/solve.h"
 
 namespace radiant::proto {
@@ -687,7 +688,8 @@ std::vector<Vec3> SceneReader::grid(const Json& j, const Ptr& p) {
 Settings SceneReader::settings(const Json& j, const Ptr& p) {
     Settings s;
     if (!object(j, p, "settings")) return s;
-    check_keys(j, p, {"tolerance", "max_seconds", "method", "strict", "maintenance_factor"});
+    check_keys(j, p,
+               {"tolerance", "max_seconds", "method", "strict", "maintenance_factor", "digits"});
     s.maintenance_factor = optional_number(j, p, "maintenance_factor");
     if (const Json* t = member(j, p, "tolerance", false)) {
         s.tolerance = number(*t, p / "tolerance", "tolerance");
@@ -697,6 +699,11 @@ Settings SceneReader::settings(const Json& j, const Ptr& p) {
     }
     if (const Json* t = member(j, p, "strict", false))
         s.strict = boolean(*t, p / "strict", "strict");
+    if (const Json* d = member(j, p, "digits", false)) {
+        if (const auto digits = integer(*d, p / "digits", "digits", 1, kMaxDigits)) {
+            s.digits = static_cast<int>(*digits);
+        }
+    }
     if (const Json* m = member(j, p, "method", false)) {
         // The engine's own list, so the parser never accepts a method the engine lacks.
         const auto& methods = solver_names();

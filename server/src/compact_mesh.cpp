@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "radiant/proto/base64.h"
+
 namespace radiant::server {
 namespace {
 
@@ -56,6 +58,17 @@ void append_array(std::string& out, const char* key, const std::vector<T>& value
         if (group > 1 && i % group == group - 1) out += ']';
     }
     out += ']';
+}
+
+/// `"key":"<base64 of the values' bytes>"`.
+template <typename T>
+void append_base64(std::string& out, const char* key, const std::vector<T>& values) {
+    out += '"';
+    out += key;
+    out += "\":\"";
+    out += proto::encode_base64(
+        std::string_view(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T)));
+    out += '"';
 }
 
 float to_float(double value) {
@@ -147,6 +160,24 @@ std::string radiosity_json(const CompactMesh& mesh) {
     append_array(out, "triangle_radiosity", mesh.triangle_radiosity);
     out += ',';
     append_array(out, "vertex_radiosity", mesh.vertex_radiosity);
+    return out;
+}
+
+std::string geometry_base64_json(const CompactMesh& mesh) {
+    std::string out;
+    append_base64(out, "vertices", mesh.vertices);
+    out += ',';
+    append_base64(out, "triangles", mesh.triangles);
+    out += ',';
+    append_base64(out, "triangle_surface", mesh.triangle_surface);
+    return out;
+}
+
+std::string radiosity_base64_json(const CompactMesh& mesh) {
+    std::string out;
+    append_base64(out, "triangle_radiosity", mesh.triangle_radiosity);
+    out += ',';
+    append_base64(out, "vertex_radiosity", mesh.vertex_radiosity);
     return out;
 }
 

@@ -29,8 +29,13 @@ std::string EventStream::next(const JobRecord& job, const JobSnapshot* snapshot)
                                 event("mesh", info.mesh_event_id, snapshot->mesh_event()));
             mesh_sent_ = info.mesh_version;
         }
+        // Likewise the values: sent or resumed after, unless this is the final event.
+        const bool has_values =
+            info.values_event_id != 0 && !info.final &&
+            (values_sent_ == info.values_event_id || resumed_after_ >= info.values_event_id);
         events.emplace_back(info.radiosity_event_id, event("radiosity", info.radiosity_event_id,
-                                                           snapshot->radiosity_event()));
+                                                           snapshot->radiosity_event(!has_values)));
+        values_sent_ = info.values_event_id;
     }
     const JobProgress& p = job.progress;
     if (p.sequence > last_sent_) {

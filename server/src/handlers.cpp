@@ -4,6 +4,8 @@
 #include <string_view>
 #include <vector>
 
+#include "embedded_files.h"
+#include "job_errors.h"
 #include "radiant/proto/result_gltf.h"
 #include "radiant/proto/result_json.h"
 #include "radiant/proto/scene_json.h"
@@ -18,16 +20,6 @@ constexpr std::size_t kMaxPageSize = 1000;
 constexpr std::size_t kDefaultPageSize = 50;
 /// How long a client should wait before retrying a full queue; solves take seconds to minutes.
 constexpr const char* kRetryAfterSeconds = "5";
-
-Response unknown_job(const Request& request, const std::string& id) {
-    return error_response(request, http::status::not_found, "not_found",
-                          "no job with id \"" + id + "\"");
-}
-
-Response not_ready(const Request& request, const std::string& id) {
-    return error_response(request, http::status::not_found, "not_ready",
-                          "job " + id + " is queued; it has no result yet");
-}
 
 /// The sensor sets of a stored radiant-result/1 document: names and illuminances only, which is
 /// all the glTF's point layer needs.
@@ -58,24 +50,30 @@ Response job_response(const Request& request, http::status status, const JobReco
 nlohmann::json running_result(ServiceContext& ctx, const JobRecord& job,
                               const JobSnapshot* snapshot) {
     const JobProgress& p = job.progress;
+    const RunningScene scene = ctx.jobs.running_scene(job.id);
     nlohmann::json doc = {{"format", "radiant-result/1"},
-                          {"scene", ctx.jobs.scene_name(job.id)},
+                          {"scene", scene.name},
                           {"status", "running"},
+                          {"units", proto::result_units_json()},
                           {"stats",
                            {{"iterations", p.iterations},
                             {"rays", p.rays},
-                            {"seconds", p.elapsed_seconds},
-                            {"unshot_fraction", p.unshot_fraction},
-                            {"error_estimate", p.error_estimate}}},
-                          {"progress", job_to_json(job)["progress"]},
+                            {"seconds", proto::round_significant(p.elapsed_seconds, scene.digits)},
+                            {"unshot_fraction", proto::round_up_significant(
+                                                    p.unshot_fraction, proto::kEstimateDigits)}}},
+                          {"progress", job_progress_json(p)},
                           {"sensors", nlohmann::json::array()},
                           {"surfaces", nlohmann::json::array()},
                           {"warnings", job.warnings}};
+    if (p.error_estimate) {
+        doc["stats"]["error_estimate"] =
+            proto::round_up_significant(*p.error_estimate, proto::kEstimateDigits);
+    }
     if (snapshot) {
         doc["snapshot"] = {{"version", snapshot->info().version},
                            {"mesh_version", snapshot->info().mesh_version}};
         if (snapshot->info().sensors)
-            doc["sensors"] = proto::sensors_to_json(*snapshot->info().sensors);
+            doc["sensors"] = proto::sensors_to_json(*snapshot->info().sensors, scene.digits);
     }
     return doc;
 }
@@ -286,6 +284,11 @@ Response metrics(ServiceContext& ctx, const Request& request) {
     return text_response(request, http::status::ok,
                          ctx.metrics.render(ctx.store.count_by_status(), ctx.jobs.queue_length()),
                          "text/plain; version=0.0.4");
+}
+
+Response openapi(const Request& request) {
+    return text_response(request, http::status::ok, std::string(openapi_yaml()),
+                         "application/yaml");
 }
 
 Response not_found(const Request& request) {

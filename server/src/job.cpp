@@ -7,6 +7,8 @@
 #include <mutex>
 #include <random>
 
+#include "radiant/proto/significant_digits.h"
+
 namespace radiant::server {
 
 const char* to_string(JobStatus status) {
@@ -38,15 +40,24 @@ bool is_terminal(JobStatus status) {
            status == JobStatus::cancelled;
 }
 
-nlohmann::json progress_to_json(const JobProgress& p) {
-    return {{"sequence", p.sequence},
-            {"stage", p.stage},
-            {"fraction", p.fraction},
+nlohmann::json job_progress_json(const JobProgress& p) {
+    using proto::kDefaultDigits;
+    using proto::kEstimateDigits;
+    return {{"stage", p.stage},
+            {"fraction", proto::round_significant(p.fraction, kDefaultDigits)},
             {"iterations", p.iterations},
-            {"unshot_fraction", p.unshot_fraction},
-            {"error_estimate", p.error_estimate},
-            {"elapsed_seconds", p.elapsed_seconds},
-            {"rays", p.rays}};
+            {"unshot_fraction", proto::round_up_significant(p.unshot_fraction, kEstimateDigits)},
+            {"error_estimate", p.error_estimate ? nlohmann::json(proto::round_up_significant(
+                                                      *p.error_estimate, kEstimateDigits))
+                                                : nlohmann::json(nullptr)},
+            {"elapsed_seconds", proto::round_significant(p.elapsed_seconds, kDefaultDigits)}};
+}
+
+nlohmann::json progress_to_json(const JobProgress& p) {
+    nlohmann::json json = job_progress_json(p);
+    json["sequence"] = p.sequence;
+    json["rays"] = p.rays;
+    return json;
 }
 
 JobProgress progress_from_json(const nlohmann::json& json) {
@@ -58,6 +69,8 @@ JobProgress progress_from_json(const nlohmann::json& json) {
         using T = std::decay_t<decltype(field)>;
         if constexpr (std::is_same_v<T, std::string>) {
             if (it->is_string()) field = it->template get<std::string>();
+        } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+            if (it->is_number()) field = it->template get<double>();
         } else {
             if (it->is_number()) field = it->template get<T>();
         }
@@ -96,13 +109,7 @@ nlohmann::json job_to_json(const JobRecord& job) {
     const JobProgress& p = job.progress;
     nlohmann::json json = {{"id", job.id},
                            {"status", to_string(job.status)},
-                           {"progress",
-                            {{"stage", p.stage},
-                             {"fraction", p.fraction},
-                             {"iterations", p.iterations},
-                             {"unshot_fraction", p.unshot_fraction},
-                             {"error_estimate", p.error_estimate},
-                             {"elapsed_seconds", p.elapsed_seconds}}},
+                           {"progress", job_progress_json(p)},
                            {"created", time_or_null(job.created)},
                            {"started", time_or_null(job.started)},
                            {"finished", time_or_null(job.finished)},

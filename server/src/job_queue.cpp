@@ -62,6 +62,10 @@ struct JobQueue::LiveJob final : SolveObserver {
         const bool same_mesh = snapshot && snapshot->info().mesh_version == s.mesh_version;
         info.mesh_event_id = same_mesh ? snapshot->info().mesh_event_id : ++last_event_id;
         info.radiosity_event_id = ++last_event_id;
+        // The engine repeats its latest values by handing over the same mesh again.
+        const bool same_values = same_mesh && s.mesh && snapshot->source() == s.mesh.get();
+        info.values_event_id =
+            same_values ? snapshot->info().values_event_id : info.radiosity_event_id;
         info.progress = job_progress(s.progress, record.progress.sequence);
         info.sensors = s.sensors;
         snapshot = std::make_shared<const JobSnapshot>(id, std::move(info), s.mesh);
@@ -90,8 +94,8 @@ struct JobQueue::LiveJob final : SolveObserver {
     CancellationToken token;
     std::atomic<bool> user_cancelled{false};  ///< false + token cancelled: shutdown
     mutable std::mutex mutex;
-    JobRecord record;        ///< guarded by mutex; never holds the scene text
-    std::string scene_name;  ///< guarded by mutex
+    JobRecord record;    ///< guarded by mutex; never holds the scene text
+    RunningScene scene;  ///< guarded by mutex
     /// Guarded by mutex: the job's event ids (progress, mesh, radiosity) come from one counter.
     std::uint64_t last_event_id = 0;
     std::shared_ptr<const JobSnapshot> snapshot;  ///< guarded by mutex
@@ -194,12 +198,12 @@ std::shared_ptr<const JobSnapshot> JobQueue::snapshot(const std::string& id) con
     return std::make_shared<const JobSnapshot>(id, std::move(stored->info), std::move(*mesh));
 }
 
-std::string JobQueue::scene_name(const std::string& id) const {
+RunningScene JobQueue::running_scene(const std::string& id) const {
     const std::lock_guard lock(mutex_);
     const auto it = live_.find(id);
     if (it == live_.end()) return {};
     const std::lock_guard job_lock(it->second->mutex);
-    return it->second->scene_name;
+    return it->second->scene;
 }
 
 std::optional<JobRecord> JobQueue::cancel(const std::string& id) {
@@ -329,7 +333,7 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     const proto::ParseOutcome outcome = proto::parse_scene(stored->scene_json);
     {
         const std::lock_guard lock(job->mutex);
-        if (outcome.ok()) job->scene_name = outcome.scene->name;
+        if (outcome.ok()) job->scene = {outcome.scene->name, outcome.scene->settings.digits};
         job->record.status = JobStatus::running;
         job->record.started = now_millis();
     }
@@ -378,8 +382,10 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
                                                                     : JobStatus::done;
     JobProgress progress;
     std::shared_ptr<const JobSnapshot> final_snapshot;
+    int digits = 0;
     {
         const std::lock_guard lock(job->mutex);
+        digits = job->scene.digits;
         progress = job->record.progress;
         progress.sequence = ++job->last_event_id;  // after the final snapshot's events
         final_snapshot = job->snapshot;
@@ -387,7 +393,9 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     if (status == JobStatus::done) progress.fraction = 1;
     progress.iterations = result.stats.iterations;
     progress.unshot_fraction = result.stats.unshot_fraction;
-    progress.error_estimate = result.stats.error_estimate;
+    progress.error_estimate = result.status == SolveStatus::failed
+                                  ? std::nullopt
+                                  : std::optional<double>(result.stats.error_estimate);
     progress.elapsed_seconds = result.stats.seconds;
     progress.rays = result.stats.rays;
     JobRecord finished_job;
@@ -402,7 +410,7 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
         mesh = StoredMesh{final_snapshot->info(), encode(final_snapshot->mesh())};
     }
     finished_job.warnings = proto::warnings_to_json(result.warnings);
-    store_outcome(*job, finished_job, proto::result_to_json(result).dump(), mesh);
+    store_outcome(*job, finished_job, proto::result_to_json(result, digits).dump(), mesh);
     metrics_.count_solve(result.stats.seconds, result.stats.rays);
     spdlog::info("job {} running -> {} ({}, {:.2f} s)", id, to_string(job->copy().status),
                  to_string(result.status), result.stats.seconds);

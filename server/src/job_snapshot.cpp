@@ -6,6 +6,9 @@
 namespace radiant::server {
 namespace {
 
+/// How the arrays of `mesh` and `radiosity` events are written (docs/service.md).
+constexpr const char* kEventArrayEncoding = "base64-le";
+
 /// `head` is a JSON object; `arrays` are more members (no braces) to add to it.
 std::string merge(const nlohmann::json& head, const std::string& arrays) {
     std::string out = head.dump();
@@ -36,26 +39,35 @@ const CompactMesh& JobSnapshot::mesh() const {
 
 const std::string& JobSnapshot::mesh_event() const {
     std::call_once(mesh_once_, [this] {
-        mesh_event_ =
-            merge({{"id", job_id_}, {"mesh_version", info_.mesh_version}}, geometry_json(mesh()));
+        mesh_event_ = merge({{"id", job_id_},
+                             {"mesh_version", info_.mesh_version},
+                             {"encoding", kEventArrayEncoding}},
+                            geometry_base64_json(mesh()));
     });
     return mesh_event_;
 }
 
-const std::string& JobSnapshot::radiosity_event() const {
-    std::call_once(radiosity_once_, [this] {
-        const JobProgress& p = info_.progress;
-        radiosity_event_ = merge({{"id", job_id_},
-                                  {"mesh_version", info_.mesh_version},
-                                  {"version", info_.version},
-                                  {"final", info_.final},
-                                  {"stage", p.stage},
-                                  {"fraction", p.fraction},
-                                  {"iterations", p.iterations},
-                                  {"error_estimate", p.error_estimate},
-                                  {"elapsed_seconds", p.elapsed_seconds}},
-                                 radiosity_json(mesh()));
-    });
+const std::string& JobSnapshot::radiosity_event(bool with_values) const {
+    const auto head = [this] {
+        nlohmann::json json = job_progress_json(info_.progress);
+        json.erase("unshot_fraction");
+        json.update({{"id", job_id_},
+                     {"mesh_version", info_.mesh_version},
+                     {"version", info_.version},
+                     {"final", info_.final},
+                     {"encoding", kEventArrayEncoding}});
+        return json;
+    };
+    if (!with_values) {
+        std::call_once(repeat_once_, [&] {
+            nlohmann::json json = head();
+            json["values_event"] = info_.values_event_id;
+            repeat_event_ = json.dump();
+        });
+        return repeat_event_;
+    }
+    std::call_once(radiosity_once_,
+                   [&] { radiosity_event_ = merge(head(), radiosity_base64_json(mesh())); });
     return radiosity_event_;
 }
 

@@ -16,6 +16,7 @@
 #include <boost/asio/signal_set.hpp>
 #include <boost/asio/thread_pool.hpp>
 
+#include "radiant/server/blocking_pool.h"
 #include "radiant/server/config.h"
 #include "radiant/server/handlers.h"
 #include "radiant/server/job_queue.h"
@@ -31,6 +32,11 @@ namespace {
 namespace net = boost::asio;
 namespace fs = std::filesystem;
 using namespace radiant::server;
+
+/// Pictures and CSV files of stored results are drawn one at a time beside the solves (each
+/// takes well under a second); this many more may wait before requests get 503.
+constexpr std::size_t kDrawingThreads = 1;
+constexpr std::size_t kMostWaitingDrawings = 16;
 
 std::size_t mebibytes(double mb) { return static_cast<std::size_t>(mb * 1024 * 1024); }
 
@@ -76,9 +82,12 @@ int serve(const ServerConfig& config) {
     Router router(ctx, std::move(web));
 
     net::io_context ioc(static_cast<int>(config.io_threads));
-    // After the io_context, so that it is joined and destroyed first: its tasks hold sessions.
+    // After the io_context, so that they are joined and destroyed first: their tasks hold
+    // sessions.
     net::thread_pool scene_pool(config.scene_threads);
     ctx.scene_pool = &scene_pool;
+    BlockingPool drawing(kDrawingThreads, kMostWaitingDrawings);
+    ctx.blocking = &drawing;
     SessionLimits limits;
     limits.body_bytes = config.max_body_bytes;
     const net::ip::tcp::endpoint endpoint(net::ip::make_address(listen->host), listen->port);

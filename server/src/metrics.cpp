@@ -11,6 +11,7 @@ void Metrics::count_request(unsigned status) {
 
 void Metrics::count_solve(double seconds, std::uint64_t rays) {
     const std::lock_guard lock(mutex_);
+    ++solves_;
     solve_seconds_ += seconds;
     rays_ += rays;
 }
@@ -29,6 +30,9 @@ std::string Metrics::render(const std::map<JobStatus, std::size_t>& jobs,
            "# TYPE radiant_queue_length gauge\n"
         << "radiant_queue_length " << queue_length << '\n';
     const std::lock_guard lock(mutex_);
+    out << "# HELP radiant_solves_total Solves run to their end (done, failed or cancelled).\n"
+           "# TYPE radiant_solves_total counter\n"
+        << "radiant_solves_total " << solves_ << '\n';
     out << "# HELP radiant_solve_seconds_total Wall-clock seconds spent solving.\n"
            "# TYPE radiant_solve_seconds_total counter\n"
         << "radiant_solve_seconds_total " << solve_seconds_ << '\n';

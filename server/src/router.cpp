@@ -33,6 +33,14 @@ Response method_not_allowed(const Request& request, const char* allow) {
     return response;
 }
 
+/// Catch at the boundary: a broken request or store is one 500, not a dead daemon.
+Response internal_error(const Request& request, const std::exception& e) {
+    spdlog::error("{} {}: {}", std::string(request.method_string()), std::string(request.target()),
+                  e.what());
+    return error_response(request, http::status::internal_server_error, "internal",
+                          "internal error; see the server log");
+}
+
 }  // namespace
 
 Query parse_query(std::string_view query) {
@@ -64,14 +72,23 @@ RouteResult Router::route(const Request& request) {
         }
         RouteResult routed = dispatch(request);
         add_cors_headers(ctx_.access, request, routed.response);
+        if (routed.deferred) {
+            // Deferred work runs later, on another thread: it gets the same boundary and headers.
+            routed.deferred = [work = std::move(routed.deferred), request,
+                               &access = ctx_.access]() -> Response {
+                Response response;
+                try {
+                    response = work();
+                } catch (const std::exception& e) {
+                    response = internal_error(request, e);
+                }
+                add_cors_headers(access, request, response);
+                return response;
+            };
+        }
         return routed;
     } catch (const std::exception& e) {
-        // Catch at the boundary: a broken request or store is one 500, not a dead daemon.
-        spdlog::error("{} {}: {}", std::string(request.method_string()),
-                      std::string(request.target()), e.what());
-        return {error_response(request, http::status::internal_server_error, "internal",
-                               "internal error; see the server log"),
-                std::nullopt};
+        return {internal_error(request, e), std::nullopt};
     }
 }
 
@@ -100,6 +117,10 @@ RouteResult Router::dispatch(const Request& request) {
         }
         return {web_.serve(request, path), std::nullopt};
     }
+    if (parts.size() == 2 && parts[1] == "openapi.yaml") {
+        if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
+        return {handlers::openapi(request), std::nullopt};
+    }
     if (parts.size() < 2 || parts[1] != "jobs") {
         return {handlers::not_found(request), std::nullopt};
     }
@@ -127,6 +148,19 @@ RouteResult Router::dispatch(const Request& request) {
     if (parts.size() == 4 && parts[3] == "scenes") {
         if (method != http::verb::post) return {method_not_allowed(request, "POST"), std::nullopt};
         return {handlers::post_light_scene(ctx_, request, id), std::nullopt};
+    }
+    // Files made from the stored result: their work leaves the I/O thread.
+    if (parts.size() == 4 &&
+        (parts[3] == "sensors.csv" || parts[3] == "plan.png" || parts[3] == "view.png")) {
+        if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
+        RouteResult routed{Response{}, std::nullopt};
+        if (parts[3] == "sensors.csv")
+            routed.deferred = handlers::get_sensors_csv(ctx_, request, id);
+        if (parts[3] == "plan.png")
+            routed.deferred = handlers::get_plan_png(ctx_, request, id, query);
+        if (parts[3] == "view.png")
+            routed.deferred = handlers::get_view_png(ctx_, request, id, query);
+        return routed;
     }
     if (parts.size() == 4 && parts[3] == "events") {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};

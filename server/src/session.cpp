@@ -20,6 +20,8 @@ namespace {
 /// How long a refused connection may keep sending before it is closed: reading (and dropping)
 /// what is in flight lets the client see the error instead of a connection reset.
 constexpr std::chrono::seconds kLingerTime{1};
+/// Pictures and CSV files take a fraction of a second each: a busy pool frees up quickly.
+constexpr const char* kBusyRetrySeconds = "1";
 
 }  // namespace
 
@@ -106,16 +108,32 @@ void Session::on_read(beast::error_code ec) {
         net::post(*pool, [self = shared_from_this(), request] {
             auto routed = std::make_shared<RouteResult>(self->router_.route(*request));
             net::post(self->stream_.get_executor(),
-                      [self, routed] { self->deliver(std::move(*routed)); });
+                      [self, routed, request] { self->deliver(std::move(*routed), *request); });
         });
         return;
     }
-    deliver(router_.route(*request));
+    deliver(router_.route(*request), *request);
 }
 
-void Session::deliver(RouteResult routed) {
+void Session::deliver(RouteResult routed, const Request& request) {
     if (routed.events) return start_events(std::move(routed.response), *routed.events);
+    if (routed.deferred) return run_deferred(std::move(routed.deferred), request);
     send(std::move(routed.response));
+}
+
+void Session::run_deferred(DeferredResponse work, const Request& request) {
+    BlockingPool* pool = router_.context().blocking;
+    if (!pool) return send(work());
+    // The connection reads nothing more until this answer is written, as for any request.
+    auto task = [self = shared_from_this(), work = std::move(work)] {
+        net::post(self->stream_.get_executor(),
+                  [self, response = work()]() mutable { self->send(std::move(response)); });
+    };
+    if (pool->try_post(std::move(task))) return;
+    Response busy = error_response(request, http::status::service_unavailable, "busy",
+                                   "the service is busy drawing; retry later");
+    busy.set(http::field::retry_after, kBusyRetrySeconds);
+    send(std::move(busy));
 }
 
 void Session::refuse(http::status status, const std::string& code, const std::string& message) {

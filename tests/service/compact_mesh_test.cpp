@@ -4,10 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "radiant/proto/base64.h"
 
 namespace {
 
@@ -61,6 +65,36 @@ TEST(CompactMesh, JsonIsShortestFloatTextAndNeverNaN) {
     EXPECT_EQ(doc["vertices"][2][1], 2.25);
     EXPECT_NE(radiosity_json(c).find("[0.1]"), std::string::npos) << radiosity_json(c);
     EXPECT_EQ(doc["vertex_radiosity"][1], 0);
+}
+
+TEST(CompactMesh, EventArraysAreBase64OfTheLittleEndianValues) {
+    const CompactMesh c = compact(triangle());
+    std::string text(1, '{');
+    text.append(geometry_base64_json(c)).append(",").append(radiosity_base64_json(c)).append("}");
+    const auto doc = nlohmann::json::parse(text);
+    const auto bytes = [&](const char* key) {
+        const auto decoded = radiant::proto::decode_base64(doc[key].get<std::string>());
+        EXPECT_TRUE(decoded) << key;
+        return decoded ? *decoded : std::vector<unsigned char>();
+    };
+    const auto same = [](const std::vector<unsigned char>& b, const auto& values) {
+        return b.size() == values.size() * sizeof(values[0]) &&
+               std::memcmp(b.data(), values.data(), b.size()) == 0;
+    };
+    EXPECT_TRUE(same(bytes("vertices"), c.vertices));
+    EXPECT_TRUE(same(bytes("triangles"), c.triangles));
+    EXPECT_TRUE(same(bytes("triangle_surface"), c.triangle_surface));
+    EXPECT_TRUE(same(bytes("triangle_radiosity"), c.triangle_radiosity));
+    EXPECT_TRUE(same(bytes("vertex_radiosity"), c.vertex_radiosity));
+}
+
+TEST(CompactMesh, Base64RadiosityIsAboutHalfTheDecimalText) {
+    // Radiosities as a solve leaves them: no short decimals.
+    radiant::SolvedMesh mesh = triangle();
+    mesh.vertex_radiosity.clear();
+    for (int i = 0; i < 3000; ++i) mesh.vertex_radiosity.push_back(123.456789 + 0.37 * i);
+    const CompactMesh c = compact(mesh);
+    EXPECT_LT(radiosity_base64_json(c).size(), 0.6 * radiosity_json(c).size());
 }
 
 }  // namespace

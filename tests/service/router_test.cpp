@@ -15,6 +15,7 @@
 
 #include "gltf_validator.h"
 #include "radiant/proto/scene_json.h"
+#include "radiant/proto/sensors_csv.h"
 #include "radiant/server/config.h"
 #include "service_scenes.h"
 #include "test_files.h"
@@ -55,7 +56,11 @@ public:
         request.prepare_payload();
         return router_->route(request);
     }
-    Response get(const std::string& target) { return call(http::verb::get, target).response; }
+    /// Deferred answers (pictures, CSV) are made here, as the session's pool would.
+    Response get(const std::string& target) {
+        RouteResult routed = call(http::verb::get, target);
+        return routed.deferred ? routed.deferred() : routed.response;
+    }
     Response post(const std::string& body, const std::string& key = "") {
         return call(http::verb::post, "/v1/jobs", body, key).response;
     }
@@ -140,6 +145,94 @@ TEST(Router, ResultGlbIsAValidGltfOfTheSolvedMeshAndSensors) {
               http::status::not_found);
     EXPECT_EQ(s.call(http::verb::post, "/v1/jobs/" + id + "/result.glb").response.result(),
               http::status::method_not_allowed);
+}
+
+/// A finished job of a room with a 3 × 2 grid and two named points; its id.
+std::string solved_grid_room(Service& s) {
+    const std::string scene = R"({"format": "radiant-scene/1", "name": "grid-room",
+  "materials": {"wall": {"reflectance": 0.5}},
+  "surfaces": [{"name": "room", "material": "wall",
+                "box": {"min": [0, 0, 0], "max": [4, 4, 3], "facing": "in"}}],
+  "luminaires": [{"name": "bulb", "position": [2, 2, 2.5], "flux": 1000}],
+  "sensors": [
+    {"name": "grid", "normal": [0, 0, 1],
+     "grid": {"origin": [0.5, 1, 0.8], "u": [3, 0, 0], "v": [0, 2, 0], "nu": 3, "nv": 2}},
+    {"name": "desk, \"north\"", "normal": [0, -1, 0], "points": [[1.2, 3, 0.75], [2.8, 3, 0.75]]}
+  ],
+  "settings": {"tolerance": 0.1}})";
+    const Response posted = s.post(scene);
+    EXPECT_EQ(posted.result(), http::status::accepted) << posted.body();
+    const std::string id = id_of(posted);
+    EXPECT_EQ(s.wait_for(id, "done")["status"], "done");
+    return id;
+}
+
+TEST(Router, SensorsCsvHoldsTheResultsPointsAndLux) {
+    Service s;
+    const std::string id = solved_grid_room(s);
+    const json result = json::parse(s.get("/v1/jobs/" + id + "/result").body());
+    const Response csv = s.get("/v1/jobs/" + id + "/sensors.csv");
+    ASSERT_EQ(csv.result(), http::status::ok) << csv.body();
+    EXPECT_EQ(csv[http::field::content_type], "text/csv; charset=utf-8; header=present");
+    // The same bytes as the CLI's CSV of the same numbers.
+    std::vector<radiant::SensorResult> sets;
+    for (const json& set : result["sensors"]) {
+        radiant::SensorResult r;
+        r.name = set["name"];
+        for (const json& p : set["points"]) r.points.push_back({p[0], p[1], p[2]});
+        r.normal = {set["normal"][0], set["normal"][1], set["normal"][2]};
+        r.illuminance = set["illuminance"].get<std::vector<double>>();
+        sets.push_back(r);
+    }
+    EXPECT_EQ(csv.body(), radiant::proto::sensors_csv(sets, radiant::proto::kMaxDigits));
+    EXPECT_EQ(std::count(csv.body().begin(), csv.body().end(), '\n'), 1 + 6 + 2);
+    EXPECT_NE(csv.body().find("\r\n\"desk, \"\"north\"\"\",1,2.8,3,0.75,0,-1,0,"),
+              std::string::npos)
+        << csv.body();
+}
+
+TEST(Router, ThreePicturesOfOneSolveCostOneSolve) {
+    Service s;
+    const std::string id = solved_grid_room(s);
+    const std::string base = "/v1/jobs/" + id;
+    for (const std::string picture :
+         {"/plan.png?sensors=grid&size=300", "/view.png?width=120&height=90",
+          "/view.png?width=120&height=90&falsecolor=1&eye=0.5,0.5,2&target=3,3,0.5"}) {
+        const Response png = s.get(base + picture);
+        ASSERT_EQ(png.result(), http::status::ok) << picture << ": " << png.body();
+        EXPECT_EQ(png[http::field::content_type], "image/png");
+        EXPECT_EQ(png.body().substr(1, 3), "PNG") << picture;
+    }
+    const std::string metrics = s.get("/metrics").body();
+    EXPECT_NE(metrics.find("\nradiant_solves_total 1\n"), std::string::npos) << metrics;
+}
+
+TEST(Router, PictureQueriesAreChecked) {
+    Service s;
+    const std::string id = solved_grid_room(s);
+    const std::string base = "/v1/jobs/" + id;
+    for (const char* bad :
+         {"/view.png?eye=1,2", "/view.png?width=100000", "/view.png?zoom=2", "/view.png?fov=180",
+          "/view.png?falsecolor=maybe", "/view.png?eye=1,1,1&target=1,1,1", "/plan.png?size=nan",
+          "/view.png?width=2048&height=2048"}) {
+        const Response r = s.get(base + bad);
+        EXPECT_EQ(r.result(), http::status::bad_request) << bad << ": " << r.body();
+        EXPECT_EQ(json::parse(r.body())["error"]["code"], "invalid_query") << bad;
+    }
+    EXPECT_EQ(s.get(base + "/plan.png?sensors=nope").result(), http::status::not_found);
+    EXPECT_EQ(s.get("/v1/jobs/ffffffffffffffffffffffffffffffff/view.png").result(),
+              http::status::not_found);
+    EXPECT_EQ(s.call(http::verb::post, base + "/plan.png").response.result(),
+              http::status::method_not_allowed);
+}
+
+TEST(Router, OpenApiIsServed) {
+    Service s;
+    const Response r = s.get("/v1/openapi.yaml");
+    ASSERT_EQ(r.result(), http::status::ok);
+    EXPECT_EQ(r[http::field::content_type], "application/yaml");
+    EXPECT_EQ(r.body(),
+              radiant::test::read_text(fs::path(RADIANT_SOURCE_DIR) / "proto/openapi.yaml"));
 }
 
 TEST(Router, BadJsonIs400) {

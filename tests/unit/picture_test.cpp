@@ -9,8 +9,11 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "cli_run.h"
 #include "test_files.h"
@@ -236,6 +239,79 @@ TEST_F(Pictures, PlanOfAnUnknownSensorSetIsRefused) {
         "plan '" + scene_ + "' --sensors nope --out '" + (dir_ / "x.png").string() + "'");
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("nope"), std::string::npos) << r.err;
+}
+
+/// The lamp room solved with its mesh, as `radiant solve --mesh` writes it.
+nlohmann::json solved_with_mesh(const std::string& scene, const fs::path& out) {
+    const radiant::test::CliRun r =
+        radiant::test::run_cli("solve '" + scene + "' --mesh --out '" + out.string() + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(radiant::test::read_text(out));
+}
+
+// Pictures of a stored result show its numbers, not a new solve's: a result whose values no
+// solve of this symmetric room would give is drawn as it is.
+TEST_F(Pictures, AStoredResultIsDrawnAsItIsWithoutSolving) {
+    nlohmann::json result = solved_with_mesh(scene_, dir_ / "solved.json");
+    nlohmann::json& mesh = result["mesh"];
+    for (std::size_t v = 0; v < mesh["vertices"].size(); ++v) {
+        mesh["vertex_radiosity"][v] = mesh["vertices"][v][0].get<double>() < 2 ? 100.0 : 0.0;
+    }
+    for (auto& set : result["sensors"]) {
+        for (auto& lux : set["illuminance"]) lux = 10.0;
+        set["illuminance"][0] = 1000.0;  // the corner cell at the grid's origin
+    }
+    const fs::path doctored = dir_ / "doctored.json";
+    std::ofstream(doctored) << result.dump();
+    const std::string from = " --result '" + doctored.string() + "'";
+
+    const Picture view = make(kDownView + from, "stored-view.png");
+    ASSERT_EQ(view.width, 201);
+    double left = 0, right = 0;
+    for (int y = 0; y < view.height; ++y) {
+        for (int x = 0; x < 60; ++x) left += view.grey(x, y), right += view.grey(200 - x, y);
+    }
+    EXPECT_GT(left, right + 50.0 * 60 * view.height) << "the west half is the bright one";
+
+    const Picture plan = make("plan --size 400" + from, "stored-plan.png");
+    int red = 0;
+    for (int y = 0; y < plan.height; ++y) {
+        for (int x = 0; x < plan.width * 2 / 3; ++x) {  // the map, not the legend
+            const double h = hue(plan.at(x, y));
+            red += saturated(plan.at(x, y)) && (h < 20 || h > 340);
+        }
+    }
+    // One cell of 64 in red: about a 64th of the 400 × 400 map (less its label).
+    EXPECT_GT(red, 1000);
+    EXPECT_LT(red, 4000);
+}
+
+TEST_F(Pictures, AResultThatCannotBeDrawnIsRefusedWithItsPointer) {
+    const nlohmann::json solved = solved_with_mesh(scene_, dir_ / "solved.json");
+    const auto refusal = [&](const std::string& command, const nlohmann::json& result) {
+        const fs::path file = dir_ / "result.json";
+        std::ofstream(file) << result.dump();
+        const radiant::test::CliRun r =
+            radiant::test::run_cli(command + " '" + scene_ + "' --result '" + file.string() +
+                                   "' --out '" + (dir_ / "x.png").string() + "'");
+        EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+        EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+        return r.err;
+    };
+    nlohmann::json broken = solved;
+    broken["mesh"]["triangles"][0][1] = 1 << 30;
+    EXPECT_NE(refusal("render", broken).find(": /mesh/triangles/0/1: "), std::string::npos);
+    nlohmann::json other = solved;
+    other["scene"] = "another-room";
+    EXPECT_NE(refusal("render", other).find(": /scene: "), std::string::npos);
+    nlohmann::json no_mesh = solved;
+    no_mesh.erase("mesh");
+    EXPECT_NE(refusal("render", no_mesh).find("no mesh"), std::string::npos);
+    nlohmann::json short_set = solved;
+    short_set["sensors"][0]["points"].erase(0);
+    EXPECT_NE(refusal("plan", short_set).find(": /sensors/0/points: "), std::string::npos);
+    // Nothing is solved, so the solve flags do not go with --result.
+    EXPECT_FALSE(refusal("render --tolerance 0.1", solved).empty());
 }
 
 }  // namespace

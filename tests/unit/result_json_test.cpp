@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 namespace radiant::proto {
@@ -15,6 +16,8 @@ Result converged() {
     r.stats.patches = 12;
     SensorResult wp;
     wp.name = "wp";
+    wp.points = {{0.5, 0.25, 0.8}, {1.5, 0.25, 0.8}};
+    wp.normal = {0, 0, 1};
     wp.illuminance = {1, 3};
     wp.min = 1;
     wp.max = 3;
@@ -37,7 +40,11 @@ TEST(ResultJson, MapsEveryField) {
     EXPECT_EQ(j["sensors"][0]["illuminance"], nlohmann::json({1.0, 3.0}));
     EXPECT_EQ(j["sensors"][0]["uniformity"], 0.5);
     EXPECT_EQ(j["sensors"][0]["u0"], 0.5);
-    EXPECT_EQ(j["sensors"][0]["ud"], 1.0 / 3);
+    EXPECT_EQ(j["sensors"][0]["ud"], 0.3333);  // four significant digits
+    EXPECT_EQ(j["sensors"][0]["normal"], nlohmann::json({0.0, 0.0, 1.0}));
+    EXPECT_EQ(j["sensors"][0]["points"][1], nlohmann::json({1.5, 0.25, 0.8}));
+    EXPECT_EQ(j["units"]["illuminance"], "lx");
+    EXPECT_EQ(j["units"]["length"], "m");
     EXPECT_FALSE(j["sensors"][0].contains("grid"));
     EXPECT_EQ(j["surfaces"][0]["area"], 16.0);
 }
@@ -87,6 +94,59 @@ TEST(ResultJson, NonFiniteValueGivesAFailedDocument) {
     EXPECT_EQ(j["status"], "failed");
     EXPECT_NE(j["error"].get<std::string>().find("/sensors/0/illuminance/1"), std::string::npos);
     EXPECT_EQ(j.dump().find("null"), std::string::npos);
+}
+
+TEST(ResultJson, ValuesCarryTheDigitsAskedFor) {
+    Result r = converged();
+    r.sensors[0].illuminance = {278.43219, 0.000123456789, 16234.9};
+    r.surfaces[0].average_irradiance = 24.999999;
+    r.stats.seconds = 0.8312345;
+    const nlohmann::json four = result_to_json(r);
+    EXPECT_EQ(four["sensors"][0]["illuminance"], nlohmann::json({278.4, 0.0001235, 16230.0}));
+    EXPECT_EQ(four["surfaces"][0]["average_irradiance"], 25.0);
+    EXPECT_EQ(four["stats"]["seconds"], 0.8312);
+    EXPECT_EQ(four["sensors"][0]["illuminance"].dump(), "[278.4,0.0001235,16230.0]");
+    const nlohmann::json two = result_to_json(r, 2);
+    EXPECT_EQ(two["sensors"][0]["illuminance"], nlohmann::json({280.0, 0.00012, 16000.0}));
+    // 17 digits: the engine's doubles, unchanged.
+    const nlohmann::json all = result_to_json(r, kMaxDigits);
+    EXPECT_EQ(all["sensors"][0]["illuminance"][0].get<double>(), 278.43219);
+    EXPECT_EQ(all["surfaces"][0]["average_irradiance"].get<double>(), 24.999999);
+}
+
+TEST(ResultJson, ErrorEstimatesAreRoundedUpToThreeDigits) {
+    Result r = converged();
+    r.stats.error_estimate = 0.0123401;
+    r.stats.error_parts.photon_noise = 0.00987654;
+    r.stats.unshot_fraction = 0.5;
+    const nlohmann::json j = result_to_json(r, kMaxDigits);
+    EXPECT_EQ(j["stats"]["error_estimate"], 0.0124);  // a bound stays a bound
+    EXPECT_EQ(j["stats"]["error_parts"]["photon_noise"], 0.00988);
+    EXPECT_EQ(j["stats"]["unshot_fraction"], 0.5);
+    // Under the tolerance before rounding, under it after.
+    r.stats.error_estimate = 0.0099996;
+    EXPECT_LE(result_to_json(r)["stats"]["error_estimate"].get<double>(), 0.01);
+}
+
+TEST(ResultJson, LengthsAreRoundedToMicrometres) {
+    Result r = converged();
+    r.sensors[0].points = {{0.1 + 0.2, 1234.56789012, -1e-9}};
+    r.sensors[0].illuminance = {5};
+    const nlohmann::json j = result_to_json(r);
+    EXPECT_EQ(j["sensors"][0]["points"][0].dump(), "[0.3,1234.56789,0.0]");
+}
+
+TEST(SignificantDigits, RoundsInDecimal) {
+    EXPECT_EQ(round_significant(278.45, 4), 278.4);  // 278.45 is 278.44999… in binary
+    EXPECT_EQ(round_significant(-0.000123456, 3), -0.000123);
+    EXPECT_EQ(round_significant(99999, 4), 100000);
+    EXPECT_EQ(round_significant(0, 4), 0);
+    EXPECT_EQ(round_up_significant(0.0100001, 3), 0.0101);
+    EXPECT_EQ(round_up_significant(0.01, 3), 0.01);
+    EXPECT_EQ(round_up_significant(9.991, 3), 10);
+    EXPECT_EQ(round_up_significant(-2.341, 2), -2.4);
+    EXPECT_EQ(round_decimals(2.0000004, 6), 2);
+    EXPECT_FALSE(std::signbit(round_decimals(-1e-9, 6)));
 }
 
 }  // namespace

@@ -188,7 +188,8 @@ TEST(Workplane, MetricsAndGridFromEverySolver) {
         EXPECT_NEAR(s.u0, *lo / average, 1e-12) << method;
         EXPECT_NEAR(s.ud, *lo / *hi, 1e-12) << method;
         EXPECT_LT(s.ud, s.u0);  // the bulb is off-centre: the plane is far from uniform
-        const auto json = proto::result_to_json(result);
+        // All digits: the JSON carries the engine's numbers (result_json_test rounds them).
+        const auto json = proto::result_to_json(result, proto::kMaxDigits);
         const auto& set = json["sensors"][0];
         EXPECT_EQ(set["u0"], s.u0);
         EXPECT_EQ(set["ud"], s.ud);

@@ -232,6 +232,37 @@ class Job:
         """``GET /v1/jobs/{id}/result.glb``: the solved mesh and sensors as binary glTF 2.0."""
         return self._transport.call("GET", self.client._path(self.id, "/result.glb"))[1]
 
+    def sensors_csv(self) -> str:
+        """``GET /v1/jobs/{id}/sensors.csv``: every sensor point as CSV (``set, index, x, y, z,
+        nx, ny, nz, lux``; metres and lux), as ``radiant solve --csv`` writes it."""
+        return self._transport.call("GET", self.client._path(self.id, "/sensors.csv"))[1].decode()
+
+    def plan_png(self, sensors: Optional[str] = None, size: Optional[int] = None,
+                 max_lux: Optional[float] = None) -> bytes:
+        """``GET /v1/jobs/{id}/plan.png``: a sensor set's false-colour map (default: the first
+        set), drawn from the finished job's result without solving again."""
+        return self._picture("/plan.png", sensors=sensors, size=size, max_lux=max_lux)
+
+    def view_png(self, eye: Optional[Tuple[float, float, float]] = None,
+                 target: Optional[Tuple[float, float, float]] = None,
+                 up: Optional[Tuple[float, float, float]] = None, fov: Optional[float] = None,
+                 width: Optional[int] = None, height: Optional[int] = None,
+                 falsecolor: bool = False, max_lux: Optional[float] = None,
+                 exposure: Optional[float] = None) -> bytes:
+        """``GET /v1/jobs/{id}/view.png``: a perspective picture of the solved room, luminance or
+        (``falsecolor``) lux; ``eye``, ``target`` and ``up`` in metres. No solve."""
+        def xyz(v: Optional[Tuple[float, float, float]]) -> Optional[str]:
+            return None if v is None else ",".join(repr(float(c)) for c in v)
+        return self._picture("/view.png", eye=xyz(eye), target=xyz(target), up=xyz(up),
+                             fov=fov, width=width, height=height,
+                             falsecolor="1" if falsecolor else None, max_lux=max_lux,
+                             exposure=exposure)
+
+    def _picture(self, tail: str, **query: Any) -> bytes:
+        given = {k: v for k, v in query.items() if v is not None}
+        suffix = "?" + urlencode(given) if given else ""
+        return self._transport.call("GET", self.client._path(self.id, tail + suffix))[1]
+
     def cancel(self) -> Dict[str, Any]:
         """``DELETE /v1/jobs/{id}``: cancels the job; returns its status document (a running
         solve stops within about a second; its best result so far stays readable)."""

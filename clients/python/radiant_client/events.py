@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import base64
 import json
+import sys
+from array import array
 from dataclasses import dataclass
-from typing import Any, Callable, Iterable, Iterator, Optional
+from typing import Any, Callable, Dict, Iterable, Iterator, Mapping, Optional
 
 
 @dataclass(frozen=True)
@@ -82,3 +85,35 @@ def parse_events(lines: Iterable[str]) -> Iterator[Event]:
         event = parser.feed(line)
         if event is not None:
             yield event
+
+
+#: The arrays of ``mesh`` and ``radiosity`` events and their element types: ``f`` float32,
+#: ``i`` int32.
+EVENT_ARRAYS = {"vertices": "f", "triangles": "i", "triangle_surface": "i",
+                "triangle_radiosity": "f", "vertex_radiosity": "f"}
+
+
+def decode_arrays(data: Mapping[str, Any]) -> Dict[str, Any]:
+    """A ``mesh`` or ``radiosity`` event's data with its arrays decoded.
+
+    The service sends them as base64 of little-endian float32 and int32 values
+    (``"encoding": "base64-le"``, docs/service.md); here each becomes an :class:`array.array`
+    (``vertices`` holds x, y, z of each vertex in turn, ``triangles`` three vertex indices per
+    triangle). Other members are copied as they are. Raises ``ValueError`` for another
+    encoding or an array that is not whole values.
+    """
+    out = dict(data)
+    if data.get("encoding") != "base64-le":
+        raise ValueError(f"unknown array encoding {data.get('encoding')!r}")
+    for key, kind in EVENT_ARRAYS.items():
+        if key not in data:
+            continue
+        values = array(kind)
+        raw = base64.b64decode(data[key], validate=True)
+        if len(raw) % values.itemsize:
+            raise ValueError(f"{key}: {len(raw)} bytes are not whole {values.itemsize}-byte values")
+        values.frombytes(raw)
+        if sys.byteorder == "big":
+            values.byteswap()
+        out[key] = values
+    return out

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import base64
+import struct
 import unittest
 
 from radiant_client import (Event, InvalidSceneError, NotFoundError, QueueFullError,
                             RadiantError, SceneError, ServerError)
 from radiant_client.errors import error_from_response
-from radiant_client.events import EventParser, parse_events
+from radiant_client.events import EventParser, decode_arrays, parse_events
 
 
 class Events(unittest.TestCase):
@@ -37,6 +39,23 @@ class Events(unittest.TestCase):
         for line in ["event: radiosity", "id: 1", "data: {\"a\": 1}"]:
             parser.feed(line)
         self.assertEqual(parser.feed(""), Event("radiosity", 1, "{\"a\": 1}"))
+
+
+class EventArrays(unittest.TestCase):
+    def test_base64_little_endian_arrays_decode_to_float32_and_int32(self):
+        data = {"id": "j", "encoding": "base64-le", "version": 3,
+                "vertex_radiosity": base64.b64encode(struct.pack("<3f", 1.5, 0.0, 250.25)).decode(),
+                "triangles": base64.b64encode(struct.pack("<3i", 0, 1, 2)).decode()}
+        out = decode_arrays(data)
+        self.assertEqual(list(out["vertex_radiosity"]), [1.5, 0.0, 250.25])
+        self.assertEqual(list(out["triangles"]), [0, 1, 2])
+        self.assertEqual(out["version"], 3)
+
+    def test_other_encodings_and_broken_arrays_are_refused(self):
+        with self.assertRaises(ValueError):
+            decode_arrays({"encoding": "json", "vertices": []})
+        with self.assertRaises(ValueError):
+            decode_arrays({"encoding": "base64-le", "vertices": base64.b64encode(b"12345").decode()})
 
 
 class ErrorDocuments(unittest.TestCase):

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import csv
 import http.client
+import io
 import json
 import struct
 import tempfile
@@ -13,7 +15,7 @@ from pathlib import Path
 
 from radiant_client import (BadRequestError, Client, HTTPError, InvalidSceneError, NotFoundError, QueueFullError,
                             RadiantConnectionError, RadiantTimeout, SceneError, SceneFileError)
-from radiant_client.events import parse_events
+from radiant_client.events import decode_arrays, parse_events
 
 from support import (FURNISHED_OFFICE, SIMPLE_ROOM, SOURCE_DIR, CuttingProxy, Daemon,
                      free_port, require_radiantd, slow_room, tiny_room, wait_for_status)
@@ -64,7 +66,9 @@ class Service(unittest.TestCase):
         self.assertGreater(m.e_min, 0)
         self.assertLessEqual(m.e_min, m.e_avg)
         self.assertLessEqual(m.e_avg, m.e_max)
-        self.assertAlmostEqual(m.u0, m.e_min / m.e_avg)
+        # Each value carries 4 significant digits (each off by at most 5e-4 of itself), so the
+        # ratio of the rounded min and average and the rounded u0 may differ by 1.5e-3 of it.
+        self.assertAlmostEqual(m.u0, m.e_min / m.e_avg, delta=1.5e-3 * m.u0)
         rows = job.rows("workplane", result)  # a scene grid: laid out with the submitted scene
         self.assertEqual([len(r) for r in rows], [9] * 9)
         self.assertEqual(rows[0][:2], result["sensors"][0]["illuminance"][:2])
@@ -74,6 +78,35 @@ class Service(unittest.TestCase):
         self.assertEqual(job.result_glb()[:4], b"glTF")
         mesh = job.result(include_mesh=True)["mesh"]
         self.assertEqual(len(mesh["triangles"]), len(mesh["triangle_radiosity"]))
+
+    def test_files_and_compact_events_of_a_finished_job(self):
+        job = self.client.submit(SIMPLE_ROOM)
+        job.wait(timeout=120)
+        result = job.result()
+        self.assertEqual(result["units"]["illuminance"], "lx")
+        rows = list(csv.reader(io.StringIO(job.sensors_csv(), newline="")))
+        self.assertEqual(rows[0], ["set", "index", "x", "y", "z", "nx", "ny", "nz", "lux"])
+        workplane = result["sensors"][0]
+        self.assertEqual(len(rows), 1 + len(workplane["illuminance"]))
+        for row, point, lux in zip(rows[1:], workplane["points"], workplane["illuminance"]):
+            self.assertEqual([float(x) for x in row[2:5]], point)
+            self.assertEqual(float(row[8]), lux)
+        for picture in (job.plan_png(size=200), job.view_png(width=80, height=60),
+                        job.view_png(eye=(0.5, 0.5, 2.0), target=(3, 3, 0), falsecolor=True,
+                                     width=80, height=60)):
+            self.assertEqual(picture[:8], b"\x89PNG\r\n\x1a\n")
+        mesh = radiosity = None
+        for event in job.events(kinds=("mesh", "radiosity")):
+            if event.kind == "mesh":
+                mesh = decode_arrays(event.data)
+            else:
+                radiosity = decode_arrays(event.data)
+        self.assertIsNotNone(mesh)
+        self.assertTrue(radiosity["final"])
+        self.assertEqual(len(mesh["vertices"]), 3 * len(radiosity["vertex_radiosity"]))
+        self.assertEqual(len(mesh["triangles"]), 3 * len(radiosity["triangle_radiosity"]))
+        self.assertEqual(len(mesh["triangle_surface"]), len(radiosity["triangle_radiosity"]))
+        self.assertGreater(max(radiosity["vertex_radiosity"]), 0)
 
     def test_furnished_office_with_its_obj_and_ies_files(self):
         # Sent as the file is, the service refuses the references: it has no scene directory.

@@ -8,42 +8,74 @@ function need(condition, what) {
     if (!condition) throw new EventFormatError(`malformed event: ${what}`);
 }
 
-/// [[a, b, c], …] → a flat typed array of 3 per item, every item checked.
-function flatTriples(rows, ArrayType, name) {
-    need(Array.isArray(rows), `${name} is not an array`);
-    const out = new ArrayType(rows.length * 3);
-    rows.forEach((row, i) => {
-        need(Array.isArray(row) && row.length === 3, `${name}[${i}] is not a triple`);
-        for (let k = 0; k < 3; ++k) {
-            need(Number.isFinite(row[k]), `${name}[${i}] is not numeric`);
-            out[3 * i + k] = row[k];
-        }
-    });
+/// A base64 string of little-endian binary values → a typed array of `ArrayType`'s elements
+/// (the service's `"encoding": "base64-le"`), every value checked with `valid`.
+function base64Values(text, ArrayType, name, valid) {
+    need(typeof text === "string", `${name} is not a base64 string`);
+    let binary;
+    try {
+        binary = atob(text);
+    } catch {
+        throw new EventFormatError(`malformed event: ${name} is not base64`);
+    }
+    const size = ArrayType.BYTES_PER_ELEMENT;
+    need(binary.length % size === 0, `${name} is not a whole number of values`);
+    const bytes = Uint8Array.from(binary, (c) => c.charCodeAt(0));
+    const view = new DataView(bytes.buffer);
+    const out = new ArrayType(binary.length / size);
+    for (let i = 0; i < out.length; ++i) {
+        const value =
+            ArrayType === Float32Array
+                ? view.getFloat32(i * size, true)
+                : view.getInt32(i * size, true);
+        need(valid(value), `${name}[${i}] is out of range`);
+        out[i] = value;
+    }
     return out;
 }
 
-function numbers(values, ArrayType, name) {
-    need(Array.isArray(values), `${name} is not an array`);
-    need(values.every(Number.isFinite), `${name} holds a non-number`);
-    return ArrayType.from(values);
+const finite = (v) => Number.isFinite(v);
+const nonNegative = (v) => v >= 0;
+
+function needEncoding(data) {
+    need(data.encoding === "base64-le", `unknown encoding ${data.encoding}`);
 }
 
 /// `mesh`: the patch geometry of one mesh version (metres, triangles, each one's surface).
 export function decodeMesh(data) {
-    const positions = flatTriples(data.vertices, Float32Array, "vertices");
-    const indices = flatTriples(data.triangles, Uint32Array, "triangles");
+    needEncoding(data);
+    const positions = base64Values(data.vertices, Float32Array, "vertices", finite);
+    need(positions.length % 3 === 0, "vertices is not a list of triples");
+    const indices = Uint32Array.from(
+        base64Values(data.triangles, Int32Array, "triangles", nonNegative),
+    );
+    need(indices.length % 3 === 0, "triangles is not a list of triples");
     const vertexCount = positions.length / 3;
     need(
         indices.every((i) => i < vertexCount),
         "a triangle names a missing vertex",
     );
-    const triangleSurface = numbers(data.triangle_surface, Int32Array, "triangle_surface");
+    const triangleSurface = base64Values(
+        data.triangle_surface,
+        Int32Array,
+        "triangle_surface",
+        nonNegative,
+    );
     need(triangleSurface.length === indices.length / 3, "triangle_surface length");
     return { meshVersion: data.mesh_version, positions, indices, triangleSurface };
 }
 
-/// `radiosity`: lm/m² leaving each triangle and vertex of mesh version `meshVersion`.
+/// `radiosity`: lm/m² leaving each triangle and vertex of mesh version `meshVersion`. A repeat of
+/// values this stream already carried has none, only `valuesEvent`, that event's id
+/// (job_stream.js fills them in).
 export function decodeRadiosity(data) {
+    const repeat = data.values_event !== undefined;
+    if (repeat) {
+        need(Number.isInteger(data.values_event), "values_event is not an event id");
+    } else {
+        needEncoding(data);
+    }
+    const values = (name) => (repeat ? null : base64Values(data[name], Float32Array, name, finite));
     return {
         meshVersion: data.mesh_version,
         version: data.version,
@@ -53,8 +85,9 @@ export function decodeRadiosity(data) {
         iterations: data.iterations,
         errorEstimate: data.error_estimate,
         elapsedSeconds: data.elapsed_seconds,
-        triangleRadiosity: numbers(data.triangle_radiosity, Float32Array, "triangle_radiosity"),
-        vertexRadiosity: numbers(data.vertex_radiosity, Float32Array, "vertex_radiosity"),
+        valuesEvent: repeat ? data.values_event : null,
+        triangleRadiosity: values("triangle_radiosity"),
+        vertexRadiosity: values("vertex_radiosity"),
     };
 }
 

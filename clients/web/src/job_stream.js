@@ -2,11 +2,12 @@
 // service then sends only what was missed (and the current mesh again if that was missed), so a
 // dropped connection costs nothing here. The stream is closed after `done`: the service ends it
 // then, and EventSource would otherwise reconnect.
-import { decodeEvent, EVENT_KINDS } from "./events.js";
+import { decodeEvent, EVENT_KINDS, EventFormatError } from "./events.js";
 
 /// `handlers`: { mesh, radiosity, progress, done, error } (each optional), called with decoded
 /// events, and `error` with an Error when the stream fails for good or an event is malformed.
-/// Returns { close() }.
+/// A `radiosity` event that repeats earlier values (`valuesEvent`) gets them back here, so the
+/// handler always sees both arrays. Returns { close() }.
 export function followJob(jobId, handlers, EventSourceType = globalThis.EventSource) {
     const source = new EventSourceType(`v1/jobs/${encodeURIComponent(jobId)}/events`);
     let closed = false;
@@ -14,12 +15,15 @@ export function followJob(jobId, handlers, EventSourceType = globalThis.EventSou
         closed = true;
         source.close();
     };
+    // The last radiosity values the stream carried, and the id of their event.
+    let values = null;
     for (const kind of EVENT_KINDS) {
         source.addEventListener(kind, (event) => {
             if (closed) return;
             let decoded;
             try {
                 decoded = decodeEvent(kind, event.data);
+                if (kind === "radiosity") values = withValues(decoded, event.lastEventId, values);
             } catch (e) {
                 close();
                 handlers.error?.(e);
@@ -37,4 +41,20 @@ export function followJob(jobId, handlers, EventSourceType = globalThis.EventSou
         }
     });
     return { close };
+}
+
+/// Fills a repeat's arrays from `values` (the last event that had some); returns what is now the
+/// last values. Throws EventFormatError when the repeat names values this stream never had.
+function withValues(radiosity, eventId, values) {
+    if (radiosity.valuesEvent === null) {
+        return { id: String(eventId), radiosity };
+    }
+    if (values === null || values.id !== String(radiosity.valuesEvent)) {
+        throw new EventFormatError(
+            `malformed event: radiosity repeats the values of event ${radiosity.valuesEvent}, which this stream did not carry`,
+        );
+    }
+    radiosity.triangleRadiosity = values.radiosity.triangleRadiosity;
+    radiosity.vertexRadiosity = values.radiosity.vertexRadiosity;
+    return values;
 }

@@ -87,6 +87,8 @@ struct Compliance {
 
 struct SensorResult {
     std::string name;
+    std::vector<Vec3> points;  ///< metres, world frame; grids expanded (row-major, u fastest)
+    Vec3 normal{0, 0, 1};      ///< unit; the direction every point faces
     std::vector<double> illuminance;  ///< lux, in the order of the points; maintained values
     double min = 0, max = 0, average = 0, uniformity = 0;  ///< uniformity = min / average
     double u0 = 0;                   ///< EN 12464-1 U₀ = min / average (the same as `uniformity`)

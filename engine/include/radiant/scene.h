@@ -166,6 +166,8 @@ struct Settings {
     std::string method = "auto";
     std::optional<double> maintenance_factor;  ///< of every source that sets none; default 1
     bool strict = false;                       ///< warnings are errors (SolveOptions::strict)
+    /// Significant digits of the values in the JSON result (1–17); the engine ignores it.
+    int digits = 4;
 };
 
 struct Scene {

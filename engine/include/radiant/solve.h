@@ -57,7 +57,11 @@ struct Progress {
     double fraction = 0;  ///< rough completion of the whole solve in [0, 1]
     std::size_t iterations = 0;
     double unshot_fraction = 0;
-    double error_estimate = 0;
+    /// The estimated relative error of the answer so far, as SolveStats::error_estimate: empty
+    /// until the solve has one. A linear solve's residual is no such estimate (the mesh's error
+    /// comes on top), so it only shows in `fraction`; Monte Carlo rounds estimate their answer,
+    /// the radiosity methods once their mesh is checked.
+    std::optional<double> error_estimate;
     double elapsed_seconds = 0;
     std::uint64_t rays = 0;
     std::size_t elements = 0;  ///< current number of patches or hierarchy leaves

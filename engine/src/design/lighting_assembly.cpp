@@ -63,7 +63,7 @@ void assemble_lighting(const Scene& scene, const PreparedScene& prepared,
     // The shapes the sums fill: names, grids, kinds, bands and requirements.
     std::vector<SensorResult> shapes;
     for (std::size_t s = 0; s < prepared.sensors.size(); ++s) {
-        SensorResult r = sensor_result_for(prepared.sensors[s]);
+        SensorResult r = sensor_result_for(prepared.sensors[s], prepared.world_origin);
         const SensorSet& set = scene.sensors[s];
         r.kind = set.kind;
         if (set.surrounding_of) r.surrounding_of = scene.sensors[*set.surrounding_of].name;

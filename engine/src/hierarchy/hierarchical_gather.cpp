@@ -126,7 +126,7 @@ std::vector<SensorResult> gather_sensors_from_tree(const PreparedScene& scene,
     tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
     for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
         const PreparedSensorSet& set = scene.sensors[s];
-        SensorResult r = sensor_result_for(set);
+        SensorResult r = sensor_result_for(set, scene.world_origin);
         tbb::parallel_for(std::size_t{0}, set.points.size(), [&](std::size_t i) {
             std::uint64_t& local = ray_count.local();
             const Vec3& x = set.points[i];

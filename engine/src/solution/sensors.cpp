@@ -22,9 +22,12 @@ void fill_sensor_statistics(SensorResult& r) {
     r.ud = r.max > 0 ? r.min / r.max : 0;
 }
 
-SensorResult sensor_result_for(const PreparedSensorSet& set) {
+SensorResult sensor_result_for(const PreparedSensorSet& set, const Vec3& world_origin) {
     SensorResult r;
     r.name = set.name;
+    r.points.reserve(set.points.size());
+    for (const Vec3& p : set.points) r.points.push_back(p + world_origin);
+    r.normal = set.normal;
     r.grid = set.grid;
     r.illuminance.resize(set.points.size());
     return r;
@@ -38,7 +41,7 @@ std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Trans
     const std::size_t n = transport.patches().size();
     for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
         const PreparedSensorSet& set = scene.sensors[s];
-        SensorResult r = sensor_result_for(set);
+        SensorResult r = sensor_result_for(set, scene.world_origin);
         tbb::parallel_for(std::size_t{0}, set.points.size(), [&](std::size_t k) {
             std::uint64_t& local_rays = ray_count.local();
             const Vec3& x = set.points[k];

@@ -21,8 +21,9 @@ std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Trans
                                          const std::array<std::vector<double>, 3>& radiosity,
                                          int channels, double noise_share, std::uint64_t& rays);
 
-/// The result of one sensor set before its values: its name and, for a work plane, its grid.
-SensorResult sensor_result_for(const PreparedSensorSet& set);
+/// The result of one sensor set before its values: its name, points (world frame, metres) and
+/// normal, and for a work plane its grid.
+SensorResult sensor_result_for(const PreparedSensorSet& set, const Vec3& world_origin);
 
 /// min, max, average, uniformity = U₀ (min/average) and U_d (min/max) of a set's values.
 void fill_sensor_statistics(SensorResult& result);

@@ -282,7 +282,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         std::make_shared<const SolvedMesh>(leaf_mesh(tree, roots, channels, scene.world_origin));
     // The radiosity is final from here on; the heartbeat shows it while the sensors gather.
     snapshots_.offer(mesh, kLeafMeshVersion);
-    report("sensors", 0.9, outcome.iterations, outcome.error_estimate, 0);
+    report("sensors", 0.9, outcome.iterations);
     result.sensors = gather_sensors(1);
 
     SurfaceSummary summary = summarise_surfaces(scene, solved, channels);

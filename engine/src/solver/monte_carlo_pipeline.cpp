@@ -264,12 +264,17 @@ SolvedMesh display_mesh(const PreparedScene& scene, const ElementMesh& mesh,
     return out;
 }
 
+/// What progress reports of the estimate: nothing before a level's first round has one.
+std::optional<double> estimate_so_far(double reported) {
+    return std::isfinite(reported) ? std::optional<double>(reported) : std::nullopt;
+}
+
 std::vector<SensorResult> sensor_results(const PreparedScene& scene,
                                          const std::vector<double>& values) {
     std::vector<SensorResult> out;
     std::size_t next = 0;
     for (const PreparedSensorSet& set : scene.sensors) {
-        SensorResult r = sensor_result_for(set);
+        SensorResult r = sensor_result_for(set, scene.world_origin);
         for (double& v : r.illuminance) v = values[next++];
         fill_sensor_statistics(r);
         out.push_back(std::move(r));
@@ -379,7 +384,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     for (int refinements = 0;; ++refinements, edge *= kRefinementRatio) {
         // Stage: meshing — elements, and a ray tracer over them so that a hit names its element.
         Clock::time_point stage_start = Clock::now();
-        report("meshing", 0.02, rounds, reported);
+        report("meshing", 0.02, rounds, estimate_so_far(reported));
         level.reset();  // the finer level replaces it (its estimate was held in its place)
         level = std::make_unique<MonteCarloLevel>(scene, edge, options_.seed);
         elements_ = level->mesh.size();
@@ -400,7 +405,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         for (;; ++rounds) {
             // Stage: photons — the reflected light field, to this round's budget.
             stage_start = Clock::now();
-            report("photons", 0.1, rounds, reported);
+            report("photons", 0.1, rounds, estimate_so_far(reported));
             for (const auto& light : level->lights) {
                 if (done(*light)) continue;
                 const std::uint64_t photon_rays = light->field.trace(
@@ -428,7 +433,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             }
             sets_hold.resize(sets_bytes(*level, RaySets::budgeted));
             stage_start = Clock::now();
-            report("gather", 0.5, rounds, reported);
+            report("gather", 0.5, rounds, estimate_so_far(reported));
             for (const auto& light : level->lights) {
                 if (done(*light)) continue;
                 const std::uint64_t gather_rays = light->gather.gather(light->budget.sets, stop);
@@ -460,7 +465,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                              mesh_version,
                              std::make_shared<const std::vector<SensorResult>>(
                                  sensor_results(scene, maintained_values(*level, sensor_points))));
-            report("estimate", 0.9, rounds + 1, reported);
+            report("estimate", 0.9, rounds + 1, estimate_so_far(reported));
             // A round cut short by a cancel or the time limit has not earned `converged`.
             const bool complete = std::all_of(level->lights.begin(), level->lights.end(),
                                               [](const auto& light) { return light->complete(); });

@@ -115,13 +115,13 @@ Pipeline::Pipeline(const Scene& scene, const SolveOptions& options, SolveObserve
 }
 
 void Pipeline::report(const std::string& stage, double fraction, std::size_t iterations,
-                      double error, double unshot) const {
+                      std::optional<double> estimate, double unshot) const {
     if (!observer_) return;
     Progress p;
     p.stage = stage;
     p.fraction = fraction;
     p.iterations = iterations;
-    p.error_estimate = error;
+    p.error_estimate = estimate;
     p.unshot_fraction = unshot;
     p.elapsed_seconds = elapsed();
     p.rays = rays_;
@@ -146,8 +146,8 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
         std::min(kCheckCoarsening * options_.tolerance, kMaxCheckTolerance);
     const double ratio = coarse_tolerance / options_.tolerance;
     if (!(ratio >= kMinCheckRatio)) return;
-    report("checking", 0.95, result.stats.iterations, result.stats.error_estimate,
-           result.stats.unshot_fraction);
+    // Not yet the answer's estimate: the mesh's part comes from this check.
+    report("checking", 0.95, result.stats.iterations, std::nullopt, result.stats.unshot_fraction);
     SolveOptions coarse = options_within_deadline(coarse_tolerance);
     coarse.want_mesh = false;
     bool finished = !should_stop();
@@ -287,7 +287,7 @@ SolverControl Pipeline::solving_control(double tolerance) const {
         report(
             "solving",
             0.6 + 0.3 * std::clamp(std::log(std::max(err, 1e-300)) / std::log(tolerance), 0.0, 1.0),
-            it, err, unshot);
+            it, std::nullopt, unshot);
     };
     control.snapshot_interval = std::chrono::duration<double>(options_.snapshot_interval_seconds);
     return control;
@@ -641,7 +641,7 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     const auto mesh = display_mesh(outcome.radiosity);
     // The radiosity is final from here on; the heartbeat shows it while the sensors gather.
     snapshots_.offer(mesh, 1);
-    report("sensors", 0.9, outcome.iterations, outcome.error_estimate, outcome.unshot_fraction);
+    report("sensors", 0.9, outcome.iterations, std::nullopt, outcome.unshot_fraction);
     result.sensors = gather_sensors(prepared, transport, outcome.radiosity, channels,
                                     kSensorNoiseShare * options_.tolerance, rays_);
     SurfaceSummary summary = summarise_surfaces(prepared, solved, channels);

@@ -58,8 +58,9 @@ private:
     /// until the estimate from their spread meets the tolerance (monte_carlo_pipeline.cpp).
     Result run_monte_carlo(const PreparedSolve& prepared);
 
+    /// `estimate`: of the answer the solve would return now (Progress::error_estimate), if any.
     void report(const std::string& stage, double fraction, std::size_t iterations = 0,
-                double error = 0, double unshot = 0) const;
+                std::optional<double> estimate = std::nullopt, double unshot = 0) const;
     bool should_stop() const {
         return (cancel_ && cancel_->cancelled()) || (deadline_ && Clock::now() >= *deadline_);
     }

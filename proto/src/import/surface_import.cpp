@@ -4,9 +4,9 @@
 #include <map>
 #include <set>
 
-#include "base64.h"
 #include "gltf_import.h"
 #include "obj_import.h"
+#include "radiant/proto/base64.h"
 #include "scene_relative_file.h"
 
 namespace radiant::proto {

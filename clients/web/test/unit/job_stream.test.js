@@ -20,15 +20,27 @@ class FakeEventSource {
     close() {
         this.readyState = FakeEventSource.CLOSED;
     }
-    emit(kind, data) {
-        for (const listener of this.listeners[kind] ?? []) listener({ data });
+    emit(kind, data, lastEventId = "") {
+        for (const listener of this.listeners[kind] ?? []) listener({ data, lastEventId });
     }
 }
 
-const mesh =
-    '{"mesh_version":1,"vertices":[[0,0,0],[1,0,0],[0,1,0]],"triangles":[[0,1,2]],"triangle_surface":[0]}';
-const radiosity =
-    '{"mesh_version":1,"version":3,"triangle_radiosity":[5],"vertex_radiosity":[1,2,3]}';
+const f32 = (values) => Buffer.from(new Float32Array(values).buffer).toString("base64");
+const i32 = (values) => Buffer.from(new Int32Array(values).buffer).toString("base64");
+const mesh = JSON.stringify({
+    mesh_version: 1,
+    encoding: "base64-le",
+    vertices: f32([0, 0, 0, 1, 0, 0, 0, 1, 0]),
+    triangles: i32([0, 1, 2]),
+    triangle_surface: i32([0]),
+});
+const radiosity = JSON.stringify({
+    mesh_version: 1,
+    version: 3,
+    encoding: "base64-le",
+    triangle_radiosity: f32([5]),
+    vertex_radiosity: f32([1, 2, 3]),
+});
 
 test("events reach their handlers decoded, and the stream closes after done", () => {
     const seen = [];
@@ -77,5 +89,32 @@ test("a reconnecting stream is left to retry; a closed one or a malformed event 
     source = FakeEventSource.last;
     source.emit("mesh", '{"vertices": 3}');
     assert.match(errors[1], /malformed event/);
+    assert.equal(source.readyState, FakeEventSource.CLOSED);
+});
+
+test("a repeat of earlier values gets them from the event that carried them", () => {
+    const seen = [];
+    const errors = [];
+    followJob(
+        "j",
+        {
+            radiosity: (r) => seen.push([r.version, Array.from(r.vertexRadiosity)]),
+            error: (e) => errors.push(e.message),
+        },
+        FakeEventSource,
+    );
+    const source = FakeEventSource.last;
+    source.emit("mesh", mesh, "5");
+    source.emit("radiosity", radiosity, "6");
+    source.emit("radiosity", '{"mesh_version":1,"version":4,"values_event":6}', "7");
+    assert.deepEqual(seen, [
+        [3, [1, 2, 3]],
+        [4, [1, 2, 3]],
+    ]);
+    assert.deepEqual(errors, []);
+    // Values the stream never carried: an error, not a picture of nothing.
+    source.emit("radiosity", '{"mesh_version":1,"version":5,"values_event":99}', "8");
+    assert.equal(seen.length, 2);
+    assert.match(errors[0], /did not carry/);
     assert.equal(source.readyState, FakeEventSource.CLOSED);
 });

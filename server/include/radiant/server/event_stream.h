@@ -6,7 +6,8 @@
 // `radiosity` event of that version), `radiosity` (per-triangle and per-vertex radiosity of the
 // latest snapshot) and `done`. Their ids are one increasing sequence per job, so Last-Event-ID
 // resumes where the client left off; a resumed client that has not seen the current mesh gets
-// it again first.
+// it again first. A `radiosity` event whose values the client already has (the engine repeating
+// them) comes without its arrays; the final one always has them.
 #pragma once
 
 #include <cstdint>
@@ -39,7 +40,8 @@ public:
 private:
     const std::uint64_t resumed_after_;
     std::uint64_t last_sent_;
-    std::uint64_t mesh_sent_ = 0;  ///< mesh version this connection has sent (0: none)
+    std::uint64_t mesh_sent_ = 0;    ///< mesh version this connection has sent (0: none)
+    std::uint64_t values_sent_ = 0;  ///< values_event_id of the radiosity values it has sent
     bool finished_ = false;
 };
 

@@ -24,12 +24,17 @@ struct JobProgress {
     double fraction = 0;
     std::size_t iterations = 0;
     double unshot_fraction = 0;
-    double error_estimate = 0;
+    std::optional<double>
+        error_estimate;  ///< Progress::error_estimate: none until the solve has one
     double elapsed_seconds = 0;
     std::uint64_t rays = 0;
 };
 
+/// Progress numbers as JSON: fractions and seconds to 4 significant digits, the error estimate
+/// rounded up to 3 (null until there is one), as in results.
 nlohmann::json progress_to_json(const JobProgress& progress);
+/// The `progress` object of GET /v1/jobs/{id}: progress_to_json without sequence and rays.
+nlohmann::json job_progress_json(const JobProgress& progress);
 /// Lenient: missing or mistyped fields keep their defaults (the store wrote them).
 JobProgress progress_from_json(const nlohmann::json& json);
 

@@ -42,6 +42,12 @@ struct SubmitOutcome {
     std::string reason;  ///< store_unwritable: the store's error
 };
 
+/// What a running job's result documents need from its scene.
+struct RunningScene {
+    std::string name;
+    int digits = 4;  ///< settings.digits
+};
+
 class JobQueue {
 public:
     /// Re-queues what the store holds as queued or running (an earlier process stopped before
@@ -62,8 +68,8 @@ public:
     /// The latest snapshot: a running job's newest, a finished job's final one from the store;
     /// null when there is none (queued, or failed before the first mesh). Thread-safe.
     std::shared_ptr<const JobSnapshot> snapshot(const std::string& id) const;
-    /// Scene name of a running job (the name of a finished one is in its result).
-    std::string scene_name(const std::string& id) const;
+    /// Scene name and result digits of a running job (a finished one's are in its result).
+    RunningScene running_scene(const std::string& id) const;
 
     /// Cancels: a queued job becomes cancelled at once; a running solve is asked to stop and
     /// becomes cancelled within about a second, its best result kept. Either way the cancel is

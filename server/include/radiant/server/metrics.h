@@ -24,6 +24,7 @@ public:
 private:
     mutable std::mutex mutex_;
     std::map<unsigned, std::uint64_t> requests_by_status_;
+    std::uint64_t solves_ = 0;
     double solve_seconds_ = 0;
     std::uint64_t rays_ = 0;
 };

@@ -1,5 +1,6 @@
 // Maps method + path to a handler. route() is a plain function of the request, so tests drive the
-// whole API without sockets; only the event stream needs the session to keep writing.
+// whole API without sockets; only the event stream needs the session to keep writing, and
+// deferred work (pictures, CSV) a thread that is not an I/O thread.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +23,9 @@ struct EventStreamStart {
 struct RouteResult {
     Response response;
     std::optional<EventStreamStart> events;
+    /// Set instead of `response` by handlers whose work is too slow for an I/O thread: the
+    /// session runs it on the service's BlockingPool and sends what it returns. Never throws.
+    DeferredResponse deferred = {};
 };
 
 /// "a=1&b=x%20y" → {a: 1, b: "x y"}; later duplicates win.

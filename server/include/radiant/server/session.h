@@ -41,7 +41,10 @@ private:
     void do_read();
     void on_header(boost::beast::error_code ec);
     void on_read(boost::beast::error_code ec);
-    void deliver(RouteResult routed);
+    /// Sends what route() answered: a response, an event stream, or deferred work.
+    void deliver(RouteResult routed, const Request& request);
+    /// Runs `work` on the context's BlockingPool (503 when it is full) and sends its answer.
+    void run_deferred(DeferredResponse work, const Request& request);
     void refuse(http::status status, const std::string& code, const std::string& message);
     void send(Response response);
     void on_write(bool close, boost::beast::error_code ec);

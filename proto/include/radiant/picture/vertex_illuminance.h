@@ -9,9 +9,9 @@
 #include "radiant/result.h"
 #include "radiant/scene.h"
 
-namespace radiant::cli {
+namespace radiant::picture {
 
 /// One value per SolvedMesh vertex; requires result.mesh.
 std::vector<double> vertex_illuminance(const Result& result, const Scene& scene);
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture

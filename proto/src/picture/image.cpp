@@ -1,4 +1,4 @@
-#include "picture/image.h"
+#include "radiant/picture/image.h"
 
 #include <stb_image_write.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace radiant::cli {
+namespace radiant::picture {
 
 Image::Image(int width, int height, Rgb background)
     : width_(width),
@@ -54,4 +54,4 @@ std::uint8_t srgb_byte(double linear) {
     return static_cast<std::uint8_t>(std::lround(255 * encoded));
 }
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture

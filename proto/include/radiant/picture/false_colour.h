@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "picture/image.h"
+#include "radiant/picture/image.h"
 
-namespace radiant::cli {
+namespace radiant::picture {
 
 /// Colour of `value` on a linear scale [0, max]; values outside are clamped to the ends.
 Rgb false_colour(double value, double max);
@@ -25,4 +25,4 @@ void draw_legend(Image& image, int x, int y, int height, double max, const std::
 /// `value` with about three significant digits and no exponent ("512", "0.78", "12.5").
 std::string short_number(double value);
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture

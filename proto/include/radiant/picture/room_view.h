@@ -6,10 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "picture/image.h"
+#include "radiant/picture/image.h"
 #include "radiant/result.h"
+#include "radiant/scene.h"
 
-namespace radiant::cli {
+namespace radiant::picture {
 
 struct Camera {
     Vec3 eye;
@@ -54,4 +55,16 @@ Image luminance_view(const SolvedMesh& mesh, const ViewHits& hits, double white_
 Image false_colour_view(const SolvedMesh& mesh, const std::vector<double>& vertex_value,
                         const ViewHits& hits, double max, const std::string& unit);
 
-}  // namespace radiant::cli
+/// How draw_view shows the room.
+struct ViewStyle {
+    bool falsecolor = false;  ///< illuminance (lux) with a legend instead of luminance
+    double max_lux = 0;       ///< top of the false-colour scale; 0 = the largest value, rounded up
+    double exposure = 0;      ///< luminance (cd/m²) shown as white; 0 = automatic
+};
+
+/// The picture `camera` takes of `result.mesh` (which must be set); `scene` tells which surfaces
+/// emit (see vertex_illuminance). Throws std::invalid_argument for a degenerate camera.
+Image draw_view(const Result& result, const Scene& scene, const Camera& camera,
+                const ViewStyle& style);
+
+}  // namespace radiant::picture

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-namespace radiant::cli {
+namespace radiant::picture {
 namespace {
 
 /// stb_easy_font's vertex layout: position, then an RGBA colour we do not use.
@@ -45,4 +45,4 @@ int text_width(const std::string& text, int scale) {
     return stb_easy_font_width(writable.data()) * scale;
 }
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture

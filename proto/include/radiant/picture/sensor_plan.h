@@ -7,10 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "picture/image.h"
+#include "radiant/picture/image.h"
+#include "radiant/result.h"
 #include "radiant/vec3.h"
 
-namespace radiant::cli {
+namespace radiant::picture {
 
 /// A line of an EN 12464-1 verdict under the title, coloured by how it went.
 struct PlanVerdict {
@@ -35,8 +36,11 @@ struct SensorPlan {
     std::vector<PlanVerdict> verdicts;
 };
 
+/// The plan of one sensor set of a result, titled "SCENE - SET" (no task area marks).
+SensorPlan sensor_plan_of(const std::string& scene_name, const SensorResult& set, double max_lux);
+
 /// Throws std::invalid_argument when there are no points or lux and points differ in count
 /// (for the set or its band).
 Image draw_sensor_plan(const SensorPlan& plan, int map_pixels);
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture

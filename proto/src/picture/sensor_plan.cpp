@@ -1,4 +1,4 @@
-#include "picture/sensor_plan.h"
+#include "radiant/picture/sensor_plan.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "picture/false_colour.h"
 #include "picture/text.h"
+#include "radiant/picture/false_colour.h"
 
-namespace radiant::cli {
+namespace radiant::picture {
 namespace {
 
 constexpr Rgb kPaper{255, 255, 255};
@@ -30,11 +30,18 @@ PlaneAxes plane_axes(const Vec3& normal) {
     return {right, cross(n, right)};
 }
 
-/// The median distance from a point to its nearest neighbour: the cell pitch of a grid, and a
-/// sensible dot size for scattered points.
+/// Points whose nearest neighbour typical_spacing measures: each search is O(points), so a
+/// sample keeps a million-point work plane at a fraction of a second.
+constexpr std::size_t kSpacingSamples = 256;
+/// Cells may cover the map this many times over (a grid covers it once).
+constexpr double kMostMapsFilled = 4;
+
+/// The median distance from a point to its nearest neighbour (over an even sample of the
+/// points): the cell pitch of a grid, and a sensible dot size for scattered points.
 double typical_spacing(const std::vector<double>& u, const std::vector<double>& v) {
     std::vector<double> nearest;
-    for (std::size_t i = 0; i < u.size(); ++i) {
+    const std::size_t stride = std::max<std::size_t>(1, u.size() / kSpacingSamples);
+    for (std::size_t i = 0; i < u.size(); i += stride) {
         double best = std::numeric_limits<double>::infinity();
         for (std::size_t j = 0; j < u.size(); ++j) {
             const double d = std::hypot(u[i] - u[j], v[i] - v[j]);
@@ -51,6 +58,16 @@ double typical_spacing(const std::vector<double>& u, const std::vector<double>& 
 bool dark(Rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b < 110; }
 
 }  // namespace
+
+SensorPlan sensor_plan_of(const std::string& scene_name, const SensorResult& set, double max_lux) {
+    SensorPlan plan;
+    plan.title = scene_name + " - " + set.name;
+    plan.points = set.points;
+    plan.normal = set.normal;
+    plan.lux = set.illuminance;
+    plan.max_lux = max_lux;
+    return plan;
+}
 
 Image draw_sensor_plan(const SensorPlan& plan, int map_pixels) {
     if (plan.points.empty()) throw std::invalid_argument("the sensor set has no points");
@@ -130,7 +147,12 @@ Image draw_sensor_plan(const SensorPlan& plan, int map_pixels) {
     };
     const auto cells = [&](const std::vector<double>& us, const std::vector<double>& vs,
                            const std::vector<double>& lux, double pitch, bool band) {
-        const int half = std::max(1, static_cast<int>(std::lround(0.5 * pitch * pixels_per_unit)));
+        // Cells of many points at one place would overlap: their area together stays within a
+        // few maps, so that drawing costs O(pixels), whatever the points.
+        const double most_half =
+            0.5 * map_pixels * std::sqrt(kMostMapsFilled / static_cast<double>(us.size()));
+        const int half = std::max(
+            1, static_cast<int>(std::lround(std::min(0.5 * pitch * pixels_per_unit, most_half))));
         for (std::size_t i = 0; i < us.size(); ++i) {
             const int cx = px(us[i]), cy = py(vs[i]);
             const Rgb colour = false_colour(lux[i], max);
@@ -180,4 +202,4 @@ Image draw_sensor_plan(const SensorPlan& plan, int map_pixels) {
     return image;
 }
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace radiant::cli {
+namespace radiant::picture {
 
 struct Rgb {
     std::uint8_t r = 0, g = 0, b = 0;
@@ -41,4 +41,4 @@ private:
 /// Linear [0, 1] → 8-bit sRGB (IEC 61966-2-1 transfer curve), clamped.
 std::uint8_t srgb_byte(double linear);
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture

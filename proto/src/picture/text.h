@@ -3,9 +3,9 @@
 
 #include <string>
 
-#include "picture/image.h"
+#include "radiant/picture/image.h"
 
-namespace radiant::cli {
+namespace radiant::picture {
 
 /// Draws `text` with its top-left corner at (x, y); glyphs are about 7·scale pixels tall.
 void draw_text(Image& image, int x, int y, const std::string& text, Rgb colour, int scale);
@@ -13,4 +13,4 @@ void draw_text(Image& image, int x, int y, const std::string& text, Rgb colour, 
 /// The width in pixels `draw_text` uses for `text`.
 int text_width(const std::string& text, int scale);
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture

@@ -1,17 +1,21 @@
-#include "base64.h"
+#include "radiant/proto/base64.h"
 
 #include <array>
 
 namespace radiant::proto {
+namespace {
+
+constexpr std::string_view kAlphabet =
+    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+}  // namespace
 
 std::optional<std::vector<unsigned char>> decode_base64(std::string_view text) {
     static const std::array<int, 256> value = [] {
         std::array<int, 256> v{};
         v.fill(-1);
-        const std::string_view alphabet =
-            "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-        for (std::size_t i = 0; i < alphabet.size(); ++i)
-            v[static_cast<unsigned char>(alphabet[i])] = static_cast<int>(i);
+        for (std::size_t i = 0; i < kAlphabet.size(); ++i)
+            v[static_cast<unsigned char>(kAlphabet[i])] = static_cast<int>(i);
         return v;
     }();
     std::vector<unsigned char> out;
@@ -40,6 +44,25 @@ std::optional<std::vector<unsigned char>> decode_base64(std::string_view text) {
     if (tail == 3) {
         out.push_back(static_cast<unsigned char>(bits >> 10));
         out.push_back(static_cast<unsigned char>(bits >> 2));
+    }
+    return out;
+}
+
+std::string encode_base64(std::string_view bytes) {
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+    std::size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const unsigned bits = (byte(i) << 16) | (byte(i + 1) << 8) | byte(i + 2);
+        for (const int shift : {18, 12, 6, 0}) out += kAlphabet[(bits >> shift) & 63];
+    }
+    if (const std::size_t tail = bytes.size() - i; tail > 0) {
+        const unsigned bits = (byte(i) << 16) | (tail == 2 ? byte(i + 1) << 8 : 0u);
+        out += kAlphabet[(bits >> 18) & 63];
+        out += kAlphabet[(bits >> 12) & 63];
+        out += tail == 2 ? kAlphabet[(bits >> 6) & 63] : '=';
+        out += '=';
     }
     return out;
 }

@@ -1,9 +1,9 @@
-#include "picture/vertex_illuminance.h"
+#include "radiant/picture/vertex_illuminance.h"
 
 #include <map>
 #include <string>
 
-namespace radiant::cli {
+namespace radiant::picture {
 namespace {
 
 /// Below this radiosity (lm/m²) a surface is taken as black: its Ē/B̄ would be noise.
@@ -47,4 +47,4 @@ std::vector<double> vertex_illuminance(const Result& result, const Scene& scene)
     return lux;
 }
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture

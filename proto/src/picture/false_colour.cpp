@@ -1,4 +1,4 @@
-#include "picture/false_colour.h"
+#include "radiant/picture/false_colour.h"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 
 #include "picture/text.h"
 
-namespace radiant::cli {
+namespace radiant::picture {
 namespace {
 
 struct Stop {
@@ -103,4 +103,4 @@ void draw_legend(Image& image, int x, int y, int height, double max, const std::
     }
 }
 
-}  // namespace radiant::cli
+}  // namespace radiant::picture

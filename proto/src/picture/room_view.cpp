@@ -1,15 +1,16 @@
-#include "picture/room_view.h"
+#include "radiant/picture/room_view.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
-#include "picture/false_colour.h"
 #include "radiant/box.h"
 #include "radiant/mesh_ray_caster.h"
+#include "radiant/picture/false_colour.h"
+#include "radiant/picture/vertex_illuminance.h"
 
-namespace radiant::cli {
+namespace radiant::picture {
 namespace {
 
 constexpr Rgb kMissed{48, 52, 60};    // rays that leave the model
@@ -151,4 +152,16 @@ Image false_colour_view(const SolvedMesh& mesh, const std::vector<double>& verte
     return image;
 }
 
-}  // namespace radiant::cli
+Image draw_view(const Result& result, const Scene& scene, const Camera& camera,
+                const ViewStyle& style) {
+    const SolvedMesh& mesh = *result.mesh;
+    const ViewHits hits = cast_view(mesh, camera);
+    if (!style.falsecolor) return luminance_view(mesh, hits, style.exposure);
+    const std::vector<double> lux = vertex_illuminance(result, scene);
+    double max = style.max_lux;
+    if (!(max > 0) && !lux.empty())
+        max = round_scale_max(*std::max_element(lux.begin(), lux.end()));
+    return false_colour_view(mesh, lux, hits, max, "lux");
+}
+
+}  // namespace radiant::picture
