@@ -1,4 +1,4 @@
-# Sanitizer and fuzzing builds (docs/testing.md). Flags go on every target, so the libraries the
+# Sanitizer and fuzzing builds (docs/fuzzing.md). Flags go on every target, so the libraries the
 # tests and fuzz targets link are checked too, not only the test code.
 set(RADIANT_SANITIZE "" CACHE STRING
   "Sanitizers for every target: address,undefined or thread (empty: none)")
