@@ -40,7 +40,7 @@ TEST(ElementMesh, CutsPiecesToTheEdgeAndKeepsTheirArea) {
     const ElementMesh mesh(scene, edge);
     std::vector<double> area(scene.pieces.size(), 0.0);
     for (std::size_t i = 0; i < mesh.size(); ++i) {
-        const Element& e = mesh[i];
+        const MeshElement& e = mesh[i];
         for (const auto& [p, q] : {std::pair{e.triangle.a, e.triangle.b},
                                    {e.triangle.b, e.triangle.c},
                                    {e.triangle.c, e.triangle.a}}) {
@@ -50,7 +50,7 @@ TEST(ElementMesh, CutsPiecesToTheEdgeAndKeepsTheirArea) {
                   0);
         area[static_cast<std::size_t>(e.piece)] += e.area_m2;
         if (e.sibling >= 0) {
-            const Element& s = mesh[static_cast<std::size_t>(e.sibling)];
+            const MeshElement& s = mesh[static_cast<std::size_t>(e.sibling)];
             EXPECT_EQ(s.sibling, static_cast<int>(i));
             EXPECT_EQ(s.piece, e.piece);
         }

@@ -8,19 +8,19 @@ namespace {
 
 struct Splitter {
     double max_edge_squared;
-    std::vector<Element>* out;  ///< null: count only
+    std::vector<MeshElement>* out;  ///< null: count only
     std::size_t count = 0;
 
     // Bisects `t` across its longest edge until every edge is at most the target. Returns the
     // element's index when `t` needed no split, else −1.
-    int split(const Triangle& t, const Element& proto) {
+    int split(const Triangle& t, const MeshElement& proto) {
         const double ab = length_squared(t.b - t.a), bc = length_squared(t.c - t.b),
                      ca = length_squared(t.a - t.c);
         const double longest = std::max({ab, bc, ca});
         if (longest <= max_edge_squared) {
             ++count;
             if (!out) return -1;
-            Element e = proto;
+            MeshElement e = proto;
             e.triangle = t;
             e.area_m2 = 0.5 * length(cross(t.b - t.a, t.c - t.a));
             out->push_back(e);
@@ -45,7 +45,7 @@ struct Splitter {
 void split_pieces(const PreparedScene& scene, Splitter& splitter) {
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
         const Piece& piece = scene.pieces[i];
-        Element proto;
+        MeshElement proto;
         proto.normal = piece.normal;
         proto.piece = static_cast<int>(i);
         proto.surface = piece.surface;
@@ -83,7 +83,7 @@ ElementMesh::ElementMesh(const PreparedScene& scene, double max_edge_m) {
     Splitter splitter{h * h, &elements_, 0};
     split_pieces(scene, splitter);
     for (std::size_t i = 0; i < elements_.size(); ++i) {
-        Element& e = elements_[i];
+        MeshElement& e = elements_[i];
         e.front = static_cast<int>(sides_.size());
         sides_.push_back({static_cast<int>(i), false});
         if (scene.materials[static_cast<std::size_t>(e.material)].two_sided) {
@@ -96,7 +96,7 @@ ElementMesh::ElementMesh(const PreparedScene& scene, double max_edge_m) {
 std::vector<Triangle> ElementMesh::triangles() const {
     std::vector<Triangle> out;
     out.reserve(elements_.size());
-    for (const Element& e : elements_) out.push_back(e.triangle);
+    for (const MeshElement& e : elements_) out.push_back(e.triangle);
     return out;
 }
 

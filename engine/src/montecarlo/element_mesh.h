@@ -11,7 +11,7 @@
 
 namespace radiant {
 
-struct Element {
+struct MeshElement {
     Triangle triangle;  ///< counter-clockwise about `normal`, local frame, metres
     Vec3 normal;        ///< unit, the front side
     double area_m2 = 0;
@@ -44,8 +44,8 @@ public:
     ElementMesh(const PreparedScene& scene, double max_edge_m);
 
     std::size_t size() const { return elements_.size(); }
-    const Element& operator[](std::size_t i) const { return elements_[i]; }
-    const std::vector<Element>& elements() const { return elements_; }
+    const MeshElement& operator[](std::size_t i) const { return elements_[i]; }
+    const std::vector<MeshElement>& elements() const { return elements_; }
     const std::vector<ElementSide>& sides() const { return sides_; }
 
     /// One triangle per element for the ray tracer (index = element).
@@ -54,7 +54,7 @@ public:
     /// The side a ray travelling along `direction` lands on when it hits `element`: its front
     /// when it arrives against the normal, else its back (−1 if black).
     int side_hit(int element, const Vec3& direction) const {
-        const Element& e = elements_[static_cast<std::size_t>(element)];
+        const MeshElement& e = elements_[static_cast<std::size_t>(element)];
         return dot(direction, e.normal) < 0 ? e.front : e.back;
     }
     /// Unit normal of a side: the element's, reversed for a back side.
@@ -65,7 +65,7 @@ public:
     }
 
 private:
-    std::vector<Element> elements_;
+    std::vector<MeshElement> elements_;
     std::vector<ElementSide> sides_;
 };
 

@@ -68,7 +68,7 @@ void PhotonField::trace_chunk(std::size_t chunk, const LightSources& sources,
             const int side = mesh_.side_hit(hit.triangle, direction);
             if (side < 0) break;
             out.push_back({side, bounce > 0, flux});
-            const Element& e = mesh_[static_cast<std::size_t>(hit.triangle)];
+            const MeshElement& e = mesh_[static_cast<std::size_t>(hit.triangle)];
             const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
             const double survive = std::min(1.0, std::max({rho[0], rho[1], rho[2]}));
             if (!(survive > 0) || rng.next() >= survive) break;
@@ -104,7 +104,7 @@ std::uint64_t PhotonField::trace(std::size_t photons, const LightSources& source
                 for (int c = 0; c < 3; ++c) total_[s][c] += d.flux[c];
                 if (!d.indirect) continue;
                 for (int c = 0; c < 3; ++c) indirect_[s][c] += d.flux[c];
-                const Element& e = mesh_[static_cast<std::size_t>(mesh_.sides()[s].element)];
+                const MeshElement& e = mesh_[static_cast<std::size_t>(mesh_.sides()[s].element)];
                 const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
                 batch_[s * kBatches + b] += static_cast<float>(photometric(
                     Rgb{rho[0] * d.flux[0], rho[1] * d.flux[1], rho[2] * d.flux[2]}, channels));

@@ -104,7 +104,7 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
             const int side = hit.triangle < 0 ? -1 : mesh_.side_hit(hit.triangle, d);
             point.hits.push_back(side);
             if (side < 0) continue;
-            const Element& e = mesh_[static_cast<std::size_t>(hit.triangle)];
+            const MeshElement& e = mesh_[static_cast<std::size_t>(hit.triangle)];
             const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
             const Vec3 n = mesh_.side_normal(side);
             const Rgb h = sources_.direct_at(origin + d * hit.t, n, visibility_, rng, rays);
@@ -132,7 +132,7 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
     // The reflected indirect light of every side: ρ ⊙ H_ind, photometric.
     std::vector<double> reflected(sides.size());
     tbb::parallel_for(std::size_t{0}, sides.size(), [&](std::size_t s) {
-        const Element& e = mesh_[static_cast<std::size_t>(sides[s].element)];
+        const MeshElement& e = mesh_[static_cast<std::size_t>(sides[s].element)];
         const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
         const Rgb h = field.indirect(static_cast<int>(s));
         reflected[s] = photometric(Rgb{rho[0] * h[0], rho[1] * h[1], rho[2] * h[2]}, channels);
@@ -140,9 +140,9 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
     // A side's twin at the coarser level: the same side of its sibling, or none.
     auto sibling_side = [&](int side) {
         const ElementSide& s = sides[static_cast<std::size_t>(side)];
-        const Element& e = mesh_[static_cast<std::size_t>(s.element)];
+        const MeshElement& e = mesh_[static_cast<std::size_t>(s.element)];
         if (e.sibling < 0) return -1;
-        const Element& o = mesh_[static_cast<std::size_t>(e.sibling)];
+        const MeshElement& o = mesh_[static_cast<std::size_t>(e.sibling)];
         return s.back ? o.back : o.front;
     };
     std::vector<GatheredPoint> out(points_.size());

@@ -168,9 +168,11 @@ void check_surfaces(const Scene& scene, Checker& check) {
             check_mesh(*mesh, base + "/mesh", check);
         } else {
             const auto& box = std::get<BoxGeometry>(s.geometry);
-            const bool ok =
-                check.finite(box.min, base + "/box/min") & check.finite(box.max, base + "/box/max");
-            if (ok && !(box.min.x < box.max.x && box.min.y < box.max.y && box.min.z < box.max.z)) {
+            // Both corners are checked, so that each bad one is reported.
+            const bool min_ok = check.finite(box.min, base + "/box/min");
+            const bool max_ok = check.finite(box.max, base + "/box/max");
+            if (min_ok && max_ok &&
+                !(box.min.x < box.max.x && box.min.y < box.max.y && box.min.z < box.max.z)) {
                 check.report(base + "/box", "box min must be below max in every axis");
             }
         }

@@ -139,7 +139,7 @@ std::size_t level_bytes(const ElementCount& count, std::size_t points, std::size
     const std::size_t per_component =
         count.sides * PhotonField::kBytesPerSide +
         points * (SensorGather::bytes_per_point() + 2 * kHeapBlockBytes + sizeof(GatheredPoint));
-    return count.elements * (sizeof(Element) + kEmbreeBytesPerTriangle) +
+    return count.elements * (sizeof(MeshElement) + kEmbreeBytesPerTriangle) +
            count.sides * sizeof(ElementSide) + components * per_component +
            PhotonField::wave_bytes(survival) + std::max(build, display);
 }
@@ -165,7 +165,7 @@ std::vector<SolvedElement> solved_sides(const PreparedScene& scene, const Elemen
     out.reserve(mesh.sides().size());
     for (std::size_t s = 0; s < mesh.sides().size(); ++s) {
         const ElementSide& side = mesh.sides()[s];
-        const Element& e = mesh[static_cast<std::size_t>(side.element)];
+        const MeshElement& e = mesh[static_cast<std::size_t>(side.element)];
         const PreparedMaterial& m = scene.materials[static_cast<std::size_t>(e.material)];
         Rgb h{0, 0, 0}, b{0, 0, 0};
         for (const auto& light : level.lights) {
@@ -249,7 +249,7 @@ SolvedMesh display_mesh(const PreparedScene& scene, const ElementMesh& mesh,
     out.triangle_surface.reserve(mesh.size());
     out.triangle_radiosity.reserve(mesh.size());
     for (std::size_t i = 0; i < mesh.size(); ++i) {
-        const Element& e = mesh[i];
+        const MeshElement& e = mesh[i];
         const double b =
             photometric(sides[static_cast<std::size_t>(e.front)].radiosity, scene.channels);
         const int first = static_cast<int>(out.vertices.size());
@@ -390,8 +390,8 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         elements_ = level->mesh.size();
         mesh_version = kFirstMeshVersion + static_cast<std::uint64_t>(refinements);
         meshing.seconds += seconds_since(stage_start);
-        meshing.memory_bytes =
-            level->mesh.size() * sizeof(Element) + level->mesh.sides().size() * sizeof(ElementSide);
+        meshing.memory_bytes = level->mesh.size() * sizeof(MeshElement) +
+                               level->mesh.sides().size() * sizeof(ElementSide);
         const double share = std::min(1.0, std::pow(kInitialTolerance / options_.tolerance, 2));
         for (std::size_t c = 0; c < level->lights.size(); ++c) {
             ComponentLight& light = *level->lights[c];

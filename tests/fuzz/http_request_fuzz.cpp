@@ -1,0 +1,88 @@
+// libFuzzer target: a raw HTTP request as radiantd's sessions read it (Beast's parser with the
+// session's limits), then routed: access checks, the router and every handler, over a real job
+// store and queue, without sockets.
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <boost/asio/buffer.hpp>
+
+#include "radiant/server/router.h"
+#include "radiant/server/session.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace radiant::server;
+
+/// A store in its own directory, a queue and a router. Accepted jobs are solved briefly on one
+/// thread (a fuzzer gets one core), and the whole service is replaced now and then so that the
+/// store stays small.
+class Service {
+public:
+    explicit Service(const fs::path& dir)
+        : dir_(dir),
+          store_(dir),
+          jobs_(store_, metrics_, kQueueOptions),
+          ctx_{jobs_, store_, metrics_, SessionLimits{}.body_bytes,
+               AccessPolicy{{}, {}, {"https://app.example.com"}}},
+          router_(ctx_) {}
+    ~Service() { jobs_.shutdown(); }
+
+    RouteResult route(const Request& request) { return router_.route(request); }
+
+private:
+    static constexpr JobQueueOptions kQueueOptions{1, 4, 0.05, std::size_t{256} << 20, 1};
+    /// Empty when the service starts, removed when it ends (declared first: destroyed last).
+    struct ScratchDirectory {
+        explicit ScratchDirectory(const fs::path& path) : path(path) { fs::remove_all(path); }
+        ~ScratchDirectory() { fs::remove_all(path); }
+        fs::path path;
+    } dir_;
+    Metrics metrics_;
+    JobStore store_;
+    JobQueue jobs_;
+    ServiceContext ctx_;
+    Router router_;
+};
+
+/// Bytes → a request, as Session::do_read parses them; none when Beast refuses them.
+std::optional<Request> parse_request(const std::uint8_t* data, std::size_t size) {
+    http::request_parser<http::string_body> parser;
+    const SessionLimits limits;
+    parser.header_limit(static_cast<std::uint32_t>(limits.header_bytes));
+    parser.body_limit(limits.body_bytes);
+    boost::beast::error_code ec;
+    std::size_t used = 0;
+    while (!ec && !parser.is_done() && used < size) {
+        const std::size_t n = parser.put(boost::asio::buffer(data + used, size - used), ec);
+        if (n == 0) break;
+        used += n;
+    }
+    // The end of the stream completes a body without a length (Beast asserts that some came).
+    if (!ec && !parser.is_done() && parser.got_some()) parser.put_eof(ec);
+    if (ec || !parser.is_done()) return std::nullopt;
+    return parser.release();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    static const fs::path dir =
+        fs::temp_directory_path() / ("radiant_http_fuzz_" + std::to_string(getpid()));
+    static std::unique_ptr<Service> service;
+    static std::size_t runs = 0;
+    if (runs++ % 10000 == 0) {
+        spdlog::set_level(spdlog::level::off);
+        service.reset();
+        service = std::make_unique<Service>(dir);
+    }
+    if (std::optional<Request> request = parse_request(data, size)) service->route(*request);
+    return 0;
+}
