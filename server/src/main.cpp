@@ -19,10 +19,10 @@
 #include "radiant/server/config.h"
 #include "radiant/server/handlers.h"
 #include "radiant/server/job_queue.h"
-#include "radiant/server/job_store.h"
 #include "radiant/server/listener.h"
 #include "radiant/server/metrics.h"
 #include "radiant/server/router.h"
+#include "radiant/server/sqlite_job_store.h"
 #include "radiant/server/static_files.h"
 #include "radiant/solve.h"
 
@@ -51,7 +51,7 @@ int serve(const ServerConfig& config) {
     }
     JobStoreOptions store_options;
     store_options.max_bytes = mebibytes(config.max_store_mb);
-    JobStore store(config.data_dir, store_options);
+    SqliteJobStore store(config.data_dir, store_options);
     Metrics metrics;
     JobQueueOptions queue_options;
     queue_options.workers = config.workers;

@@ -1,6 +1,6 @@
 // The SQLite job store on its own: the lock on its directory, private files, attempts counted
 // across process deaths, cancels that survive a restart, and a full store reported unwritable.
-#include "radiant/server/job_store.h"
+#include "radiant/server/sqlite_job_store.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -44,9 +44,9 @@ protected:
 
 TEST_F(JobStoreTest, ASecondStoreOnTheDirectoryIsRefused) {
     {
-        JobStore first(dir_);
+        SqliteJobStore first(dir_);
         try {
-            JobStore second(dir_);
+            SqliteJobStore second(dir_);
             FAIL() << "a second store opened the locked directory";
         } catch (const std::runtime_error& e) {
             const std::string what = e.what();
@@ -55,7 +55,7 @@ TEST_F(JobStoreTest, ASecondStoreOnTheDirectoryIsRefused) {
             EXPECT_NE(what.find(pid), std::string::npos) << what;
         }
     }
-    JobStore again(dir_);  // the lock goes with its holder
+    SqliteJobStore again(dir_);  // the lock goes with its holder
 }
 
 TEST_F(JobStoreTest, DirectoryIsPrivateAndFilesTooEvenWhenTheyWereNot) {
@@ -63,14 +63,14 @@ TEST_F(JobStoreTest, DirectoryIsPrivateAndFilesTooEvenWhenTheyWereNot) {
     fs::create_directories(dir_);
     fs::permissions(dir_, fs::perms(0755));
     {
-        JobStore store(dir_);
+        SqliteJobStore store(dir_);
         store.insert(job());
     }
     // An older store's world-readable database is made private too.
     fs::permissions(dir_ / "radiant.db", fs::perms(0644));
     fs::permissions(dir_, fs::perms(0755));
     {
-        JobStore store(dir_);
+        SqliteJobStore store(dir_);
         store.insert(job());  // WAL and shared-memory files exist while the store is open
         EXPECT_EQ(mode(dir_), 0700u);
         for (const char* name :
@@ -86,7 +86,7 @@ TEST_F(JobStoreTest, AJobWhoseProcessDiedTwiceFailsWithTheReason) {
     const JobRecord j = job();
     const JobRecord released = job();
     {
-        JobStore store(dir_);
+        SqliteJobStore store(dir_);
         store.insert(j);
         store.insert(released);
         store.mark_running(j.id, now_millis());  // the process dies during the solve
@@ -97,13 +97,13 @@ TEST_F(JobStoreTest, AJobWhoseProcessDiedTwiceFailsWithTheReason) {
         }
     }
     {
-        JobStore store(dir_);
+        SqliteJobStore store(dir_);
         const UnfinishedJobs first = store.requeue_unfinished(2);
         EXPECT_EQ(first.requeued.size(), 2u);
         EXPECT_TRUE(first.failed.empty());
         store.mark_running(j.id, now_millis());  // and dies again
     }
-    JobStore store(dir_);
+    SqliteJobStore store(dir_);
     const UnfinishedJobs second = store.requeue_unfinished(2);
     ASSERT_EQ(second.failed, std::vector<std::string>{j.id});
     EXPECT_EQ(second.requeued, std::vector<std::string>{released.id});
@@ -116,12 +116,12 @@ TEST_F(JobStoreTest, AJobWhoseProcessDiedTwiceFailsWithTheReason) {
 TEST_F(JobStoreTest, AnAcceptedCancelSurvivesTheProcess) {
     const JobRecord j = job();
     {
-        JobStore store(dir_);
+        SqliteJobStore store(dir_);
         store.insert(j);
         store.mark_running(j.id, now_millis());
         store.request_cancel(j.id);  // answered 202; the process dies before the solve stops
     }
-    JobStore store(dir_);
+    SqliteJobStore store(dir_);
     const UnfinishedJobs unfinished = store.requeue_unfinished(2);
     EXPECT_EQ(unfinished.cancelled, std::vector<std::string>{j.id});
     EXPECT_TRUE(unfinished.requeued.empty());
@@ -131,7 +131,7 @@ TEST_F(JobStoreTest, AnAcceptedCancelSurvivesTheProcess) {
 TEST_F(JobStoreTest, AFullStoreIsUnwritable) {
     JobStoreOptions options;
     options.max_bytes = 256 << 10;
-    JobStore store(dir_, options);
+    SqliteJobStore store(dir_, options);
     // A refused row (one idempotency key twice) is not a full store.
     JobRecord keyed = job();
     keyed.idempotency_key = new_job_id();  // any key, used twice

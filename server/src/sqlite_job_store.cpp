@@ -1,4 +1,4 @@
-#include "radiant/server/job_store.h"
+#include "radiant/server/sqlite_job_store.h"
 
 #include <fcntl.h>
 #include <spdlog/spdlog.h>
@@ -183,7 +183,7 @@ std::string select_jobs(const char* where, bool with_scene = true) {
 
 }  // namespace
 
-JobStore::JobStore(const std::filesystem::path& data_dir, JobStoreOptions options)
+SqliteJobStore::SqliteJobStore(const std::filesystem::path& data_dir, JobStoreOptions options)
     : data_dir_(data_dir) {
     make_private_directory(data_dir);
     lock_fd_ = lock_directory(data_dir);
@@ -213,7 +213,7 @@ JobStore::JobStore(const std::filesystem::path& data_dir, JobStoreOptions option
     }
 }
 
-void JobStore::initialise(const JobStoreOptions& options) {
+void SqliteJobStore::initialise(const JobStoreOptions& options) {
     // WAL: readers never wait for the writer; synchronous=NORMAL is durable across process
     // crashes (kill -9), which is what the contract promises; power loss may lose the last commit.
     exec("PRAGMA journal_mode=WAL");
@@ -263,13 +263,13 @@ void JobStore::initialise(const JobStoreOptions& options) {
         " mesh BLOB NOT NULL)");
 }
 
-JobStore::~JobStore() {
+SqliteJobStore::~SqliteJobStore() {
     sqlite3_close(db_);
     ::close(lock_fd_);  // releases the directory
 }
 
-void JobStore::add_column_if_missing(const char* table, const char* column,
-                                     const char* definition) const {
+void SqliteJobStore::add_column_if_missing(const char* table, const char* column,
+                                           const char* definition) const {
     Statement info(db_, (std::string("PRAGMA table_info(") + table + ")").c_str());
     while (info.step()) {
         if (info.text(1) == column) return;
@@ -278,7 +278,7 @@ void JobStore::add_column_if_missing(const char* table, const char* column,
         (std::string("ALTER TABLE ") + table + " ADD COLUMN " + column + " " + definition).c_str());
 }
 
-void JobStore::exec(const char* sql) const {
+void SqliteJobStore::exec(const char* sql) const {
     char* message = nullptr;
     if (sqlite3_exec(db_, sql, nullptr, nullptr, &message) != SQLITE_OK) {
         std::string why = message ? message : "unknown error";
@@ -287,13 +287,13 @@ void JobStore::exec(const char* sql) const {
     }
 }
 
-std::size_t JobStore::page_size() const {
+std::size_t SqliteJobStore::page_size() const {
     Statement s(db_, "PRAGMA page_size");
     return s.step() ? static_cast<std::size_t>(std::max<std::int64_t>(s.integer(0), 512)) : 4096;
 }
 
 template <typename Write>
-void JobStore::write(Write&& write, bool adds_rows) {
+void SqliteJobStore::write(Write&& write, bool adds_rows) {
     try {
         write();
         // Only a write that needed room proves there is room again: a row changed in place
@@ -305,7 +305,7 @@ void JobStore::write(Write&& write, bool adds_rows) {
     }
 }
 
-std::size_t JobStore::free_bytes() const {
+std::size_t SqliteJobStore::free_bytes() const {
     struct statvfs disk {};
     std::size_t free = ::statvfs(data_dir_.c_str(), &disk) == 0
                            ? static_cast<std::size_t>(disk.f_bavail) * disk.f_frsize
@@ -324,7 +324,7 @@ std::size_t JobStore::free_bytes() const {
     return free;
 }
 
-StoreHealth JobStore::health() {
+StoreHealth SqliteJobStore::health() {
     const std::lock_guard lock(mutex_);
     if (write_error_.empty()) return {};
     // Nothing may write for a while (a balancer stops sending jobs to an unhealthy daemon), so
@@ -337,7 +337,7 @@ StoreHealth JobStore::health() {
     return {false, write_error_ + " (" + std::to_string(free / 1024) + " KiB free)"};
 }
 
-void JobStore::insert(const JobRecord& job) {
+void SqliteJobStore::insert(const JobRecord& job) {
     const std::lock_guard lock(mutex_);
     write(
         [&] {
@@ -356,7 +356,7 @@ void JobStore::insert(const JobRecord& job) {
         true);
 }
 
-std::optional<JobRecord> JobStore::find(const std::string& id, bool with_scene) const {
+std::optional<JobRecord> SqliteJobStore::find(const std::string& id, bool with_scene) const {
     const std::lock_guard lock(mutex_);
     Statement s(db_, select_jobs("WHERE id = ?", with_scene).c_str());
     s.bind(1, id);
@@ -364,7 +364,7 @@ std::optional<JobRecord> JobStore::find(const std::string& id, bool with_scene) 
     return read_job(s);
 }
 
-std::optional<JobRecord> JobStore::find_by_idempotency_key(const std::string& key) const {
+std::optional<JobRecord> SqliteJobStore::find_by_idempotency_key(const std::string& key) const {
     const std::lock_guard lock(mutex_);
     Statement s(db_, select_jobs("WHERE idempotency_key = ?").c_str());
     s.bind(1, key);
@@ -372,7 +372,7 @@ std::optional<JobRecord> JobStore::find_by_idempotency_key(const std::string& ke
     return read_job(s);
 }
 
-std::vector<JobRecord> JobStore::list(std::size_t limit, const std::string& after) const {
+std::vector<JobRecord> SqliteJobStore::list(std::size_t limit, const std::string& after) const {
     const std::lock_guard lock(mutex_);
     const std::string sql = after.empty() ? select_jobs("ORDER BY seq DESC LIMIT ?", false)
                                           : select_jobs(
@@ -388,7 +388,7 @@ std::vector<JobRecord> JobStore::list(std::size_t limit, const std::string& afte
     return jobs;
 }
 
-void JobStore::mark_running(const std::string& id, UnixMillis started) {
+void SqliteJobStore::mark_running(const std::string& id, UnixMillis started) {
     const std::lock_guard lock(mutex_);
     write(
         [&] {
@@ -401,7 +401,7 @@ void JobStore::mark_running(const std::string& id, UnixMillis started) {
         false);
 }
 
-void JobStore::release(const std::string& id) {
+void SqliteJobStore::release(const std::string& id) {
     const std::lock_guard lock(mutex_);
     write(
         [&] {
@@ -414,7 +414,7 @@ void JobStore::release(const std::string& id) {
         false);
 }
 
-void JobStore::request_cancel(const std::string& id) {
+void SqliteJobStore::request_cancel(const std::string& id) {
     const std::lock_guard lock(mutex_);
     write(
         [&] {
@@ -427,7 +427,7 @@ void JobStore::request_cancel(const std::string& id) {
         false);
 }
 
-void JobStore::save_progress(const std::string& id, const JobProgress& progress) {
+void SqliteJobStore::save_progress(const std::string& id, const JobProgress& progress) {
     const std::lock_guard lock(mutex_);
     write(
         [&] {
@@ -439,7 +439,7 @@ void JobStore::save_progress(const std::string& id, const JobProgress& progress)
         false);
 }
 
-void JobStore::save_warnings(const std::string& id, const nlohmann::json& warnings) {
+void SqliteJobStore::save_warnings(const std::string& id, const nlohmann::json& warnings) {
     const std::lock_guard lock(mutex_);
     write(
         [&] {
@@ -450,19 +450,19 @@ void JobStore::save_warnings(const std::string& id, const nlohmann::json& warnin
         false);
 }
 
-void JobStore::finish(const std::string& id, JobStatus status, UnixMillis finished,
-                      const JobProgress& progress, const std::string& error,
-                      const std::optional<std::string>& result_json,
-                      const std::optional<StoredMesh>& mesh) {
+void SqliteJobStore::finish(const std::string& id, JobStatus status, UnixMillis finished,
+                            const JobProgress& progress, const std::string& error,
+                            const std::optional<std::string>& result_json,
+                            const std::optional<StoredMesh>& mesh) {
     const std::lock_guard lock(mutex_);
     write([&] { finish_locked(id, status, finished, progress, error, result_json, mesh); },
           result_json.has_value());
 }
 
-void JobStore::finish_locked(const std::string& id, JobStatus status, UnixMillis finished,
-                             const JobProgress& progress, const std::string& error,
-                             const std::optional<std::string>& result_json,
-                             const std::optional<StoredMesh>& mesh) {
+void SqliteJobStore::finish_locked(const std::string& id, JobStatus status, UnixMillis finished,
+                                   const JobProgress& progress, const std::string& error,
+                                   const std::optional<std::string>& result_json,
+                                   const std::optional<StoredMesh>& mesh) {
     exec("BEGIN IMMEDIATE");
     try {
         Statement s(db_,
@@ -501,7 +501,7 @@ void JobStore::finish_locked(const std::string& id, JobStatus status, UnixMillis
     }
 }
 
-std::optional<std::string> JobStore::result(const std::string& id) const {
+std::optional<std::string> SqliteJobStore::result(const std::string& id) const {
     const std::lock_guard lock(mutex_);
     Statement s(db_, "SELECT result FROM results WHERE job_id = ?");
     s.bind(1, id);
@@ -509,7 +509,7 @@ std::optional<std::string> JobStore::result(const std::string& id) const {
     return s.text(0);
 }
 
-std::optional<StoredMesh> JobStore::mesh(const std::string& id) const {
+std::optional<StoredMesh> SqliteJobStore::mesh(const std::string& id) const {
     const std::lock_guard lock(mutex_);
     Statement s(db_,
                 "SELECT version, mesh_version, mesh_event_id, radiosity_event_id, final, mesh"
@@ -526,7 +526,7 @@ std::optional<StoredMesh> JobStore::mesh(const std::string& id) const {
     return mesh;
 }
 
-UnfinishedJobs JobStore::requeue_unfinished(int max_attempts) {
+UnfinishedJobs SqliteJobStore::requeue_unfinished(int max_attempts) {
     const std::lock_guard lock(mutex_);
     UnfinishedJobs out;
     auto ids = [this](const char* where) {
@@ -577,7 +577,7 @@ UnfinishedJobs JobStore::requeue_unfinished(int max_attempts) {
     return out;
 }
 
-std::map<JobStatus, std::size_t> JobStore::count_by_status() const {
+std::map<JobStatus, std::size_t> SqliteJobStore::count_by_status() const {
     const std::lock_guard lock(mutex_);
     Statement s(db_, "SELECT status, COUNT(*) FROM jobs GROUP BY status");
     std::map<JobStatus, std::size_t> counts;
