@@ -10,6 +10,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -21,6 +22,9 @@ namespace fs = std::filesystem;
 /// Free space, on the disk and under JobStoreOptions::max_bytes, that lets an unwritable store
 /// count as writable again: room for a few results with their meshes.
 constexpr std::size_t kRecoveredFreeBytes = 16u << 20;
+
+/// The lease of a job that mark_running started: it never expires while the process lives.
+constexpr std::int64_t kHeldForLife = std::numeric_limits<std::int64_t>::max();
 
 /// Errors after which the store takes no writes at all, as opposed to one refused row.
 bool unwritable(int code) {
@@ -243,6 +247,9 @@ void SqliteJobStore::initialise(const JobStoreOptions& options) {
     // Solves started; one that never returns (its process died) stays counted.
     add_column_if_missing("jobs", "attempts", "INTEGER NOT NULL DEFAULT 0");
     add_column_if_missing("jobs", "cancel_requested", "INTEGER NOT NULL DEFAULT 0");
+    // The shared queue's lease (JobStore::claim): who runs the job, and until when (Unix ms).
+    add_column_if_missing("jobs", "lease_owner", "TEXT NOT NULL DEFAULT ''");
+    add_column_if_missing("jobs", "lease_expires", "INTEGER NOT NULL DEFAULT 0");
     exec(
         "CREATE UNIQUE INDEX IF NOT EXISTS jobs_idempotency ON jobs(idempotency_key)"
         " WHERE idempotency_key IS NOT NULL");
@@ -393,9 +400,9 @@ void SqliteJobStore::mark_running(const std::string& id, UnixMillis started) {
     write(
         [&] {
             Statement s(db_,
-                        "UPDATE jobs SET status = 'running', started = ?, attempts = attempts + 1"
-                        " WHERE id = ?");
-            s.bind(1, started).bind(2, id);
+                        "UPDATE jobs SET status = 'running', started = ?, attempts = attempts + 1,"
+                        " lease_owner = '', lease_expires = ? WHERE id = ?");
+            s.bind(1, started).bind(2, kHeldForLife).bind(3, id);
             s.step();
         },
         false);
@@ -463,8 +470,7 @@ void SqliteJobStore::finish_locked(const std::string& id, JobStatus status, Unix
                                    const JobProgress& progress, const std::string& error,
                                    const std::optional<std::string>& result_json,
                                    const std::optional<StoredMesh>& mesh) {
-    exec("BEGIN IMMEDIATE");
-    try {
+    transaction([&] {
         Statement s(db_,
                     "UPDATE jobs SET status = ?, finished = ?, progress = ?, error = ?"
                     " WHERE id = ?");
@@ -494,11 +500,7 @@ void SqliteJobStore::finish_locked(const std::string& id, JobStatus status, Unix
                 .bind_blob(7, mesh->blob);
             m.step();
         }
-        exec("COMMIT");
-    } catch (...) {
-        sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
-        throw;
-    }
+    });
 }
 
 std::optional<std::string> SqliteJobStore::result(const std::string& id) const {
@@ -526,39 +528,50 @@ std::optional<StoredMesh> SqliteJobStore::mesh(const std::string& id) const {
     return mesh;
 }
 
+std::vector<std::string> SqliteJobStore::ids(const std::string& where) const {
+    Statement s(db_, ("SELECT id FROM jobs WHERE " + where + " ORDER BY seq").c_str());
+    std::vector<std::string> found;
+    while (s.step()) found.push_back(s.text(0));
+    return found;
+}
+
+void SqliteJobStore::end_dead_jobs(const std::string& dead, UnixMillis now, int max_attempts,
+                                   UnfinishedJobs& out) {
+    const std::string cancelled = "(status = 'queued' OR (" + dead + ")) AND cancel_requested = 1";
+    out.cancelled = ids(cancelled);
+    Statement cancel(
+        db_, ("UPDATE jobs SET status = 'cancelled', finished = ? WHERE " + cancelled).c_str());
+    cancel.bind(1, now);
+    cancel.step();
+    const std::string killed = "(" + dead + ") AND attempts >= " + std::to_string(max_attempts);
+    out.failed = ids(killed);
+    Statement fail(
+        db_,
+        ("UPDATE jobs SET status = 'failed', finished = ?, error = ? WHERE " + killed).c_str());
+    fail.bind(1, now).bind(2, attempts_exhausted_error(max_attempts));
+    fail.step();
+}
+
+template <typename Body>
+void SqliteJobStore::transaction(Body&& body) {
+    exec("BEGIN IMMEDIATE");
+    try {
+        body();
+        exec("COMMIT");
+    } catch (...) {
+        sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+        throw;
+    }
+}
+
 UnfinishedJobs SqliteJobStore::requeue_unfinished(int max_attempts) {
     const std::lock_guard lock(mutex_);
     UnfinishedJobs out;
-    auto ids = [this](const char* where) {
-        Statement s(db_,
-                    (std::string("SELECT id FROM jobs WHERE ") + where + " ORDER BY seq").c_str());
-        std::vector<std::string> found;
-        while (s.step()) found.push_back(s.text(0));
-        return found;
-    };
     write(
         [&] {
-            exec("BEGIN IMMEDIATE");
-            try {
-                const UnixMillis now = now_millis();
-                out.cancelled = ids("status IN ('queued', 'running') AND cancel_requested = 1");
-                Statement cancel(db_,
-                                 "UPDATE jobs SET status = 'cancelled', finished = ?"
-                                 " WHERE status IN ('queued', 'running') AND cancel_requested = 1");
-                cancel.bind(1, now);
-                cancel.step();
-                const std::string killed =
-                    "status = 'running' AND attempts >= " + std::to_string(max_attempts);
-                out.failed = ids(killed.c_str());
-                Statement fail(
-                    db_,
-                    ("UPDATE jobs SET status = 'failed', finished = ?, error = ? WHERE " + killed)
-                        .c_str());
-                fail.bind(1, now).bind(
-                    2, "its solve was started " + std::to_string(max_attempts) +
-                           " times and each time the process died before it finished (killed, "
-                           "most likely for running out of memory); it is not run again");
-                fail.step();
+            transaction([&] {
+                // The directory lock proves that every running job's process is gone.
+                end_dead_jobs("status = 'running'", now_millis(), max_attempts, out);
                 // Event ids continue far above any the stopped run can have sent (it stored its
                 // sequence at least once a second and sends a few dozen ids a second), so a client
                 // resuming with an old Last-Event-ID still gets the new run's events.
@@ -567,14 +580,65 @@ UnfinishedJobs SqliteJobStore::requeue_unfinished(int max_attempts) {
                     "'sequence', COALESCE(json_extract(progress, '$.sequence'), 0) + 1000000)"
                     " WHERE status IN ('queued', 'running')");
                 out.requeued = ids("status = 'queued'");
-                exec("COMMIT");
-            } catch (...) {
-                sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
-                throw;
-            }
+            });
         },
         false);
     return out;
+}
+
+std::optional<JobRecord> SqliteJobStore::claim(const std::string& owner,
+                                               std::chrono::milliseconds lease, int max_attempts) {
+    const std::lock_guard lock(mutex_);
+    std::string id;
+    write(
+        [&] {
+            transaction([&] {
+                const UnixMillis now = now_millis();
+                const std::string expired =
+                    "status = 'running' AND lease_expires < " + std::to_string(now);
+                UnfinishedJobs ended;
+                end_dead_jobs(expired, now, max_attempts, ended);
+                // A job taken back from a dead process continues its event ids far above the
+                // ones that process sent (see requeue_unfinished).
+                Statement s(
+                    db_,
+                    ("UPDATE jobs SET status = 'running', started = ?, attempts = attempts + 1,"
+                     " lease_owner = ?, lease_expires = ?, progress = CASE WHEN status = 'running'"
+                     " THEN json_object('sequence',"
+                     " COALESCE(json_extract(progress, '$.sequence'), 0) + 1000000)"
+                     " ELSE progress END"
+                     " WHERE seq = (SELECT seq FROM jobs WHERE status = 'queued' OR (" +
+                     expired + ") ORDER BY seq LIMIT 1) RETURNING id")
+                        .c_str());
+                s.bind(1, now).bind(2, owner).bind(3, now + lease.count());
+                if (s.step()) id = s.text(0);
+            });
+        },
+        false);
+    if (id.empty()) return std::nullopt;
+    Statement s(db_, select_jobs("WHERE id = ?").c_str());
+    s.bind(1, id);
+    if (!s.step()) return std::nullopt;
+    return read_job(s);
+}
+
+LeaseRenewal SqliteJobStore::renew_lease(const std::string& id, const std::string& owner,
+                                         std::chrono::milliseconds lease) {
+    const std::lock_guard lock(mutex_);
+    LeaseRenewal renewal;
+    write(
+        [&] {
+            Statement s(db_,
+                        "UPDATE jobs SET lease_expires = ? WHERE id = ? AND status = 'running'"
+                        " AND lease_owner = ? RETURNING cancel_requested");
+            s.bind(1, now_millis() + lease.count()).bind(2, id).bind(3, owner);
+            if (s.step()) {
+                renewal.held = true;
+                renewal.cancel_requested = s.integer(0) != 0;
+            }
+        },
+        false);
+    return renewal;
 }
 
 std::map<JobStatus, std::size_t> SqliteJobStore::count_by_status() const {

@@ -1,6 +1,7 @@
 // The durable job store's interface and the types its implementations share.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <map>
 #include <optional>
@@ -45,6 +46,17 @@ struct UnfinishedJobs {
     std::vector<std::string> cancelled;  ///< a cancel was accepted before the process died
 };
 
+/// What renewing a lease tells the replica that runs the job.
+struct LeaseRenewal {
+    /// False: the lease had expired and the job went to another replica (or ended); the solve
+    /// must stop and store nothing.
+    bool held = false;
+    bool cancel_requested = false;  ///< a cancel accepted by any replica
+};
+
+/// The error a job gets when its solve was started `max_attempts` times and never finished.
+std::string attempts_exhausted_error(int max_attempts);
+
 /// Where jobs, their progress, results and meshes live, so that an accepted job survives a
 /// restart or a crash (contract §4). Two implementations: SqliteJobStore (one file under --data,
 /// the default) and, later, a server database shared by several radiantd. Every method is
@@ -63,7 +75,8 @@ public:
     /// Newest first; `after` is the id of the last job of the previous page (empty: from the top).
     virtual std::vector<JobRecord> list(std::size_t limit, const std::string& after) const = 0;
 
-    /// Counts an attempt: a process that dies while the job runs leaves the count raised.
+    /// Counts an attempt: a process that dies while the job runs leaves the count raised. The job
+    /// is held for the life of this process (no lease: the single-process queue's way).
     virtual void mark_running(const std::string& id, UnixMillis started) = 0;
     /// A running job that a clean shutdown stopped goes back to queued, its attempt uncounted.
     virtual void release(const std::string& id) = 0;
@@ -89,6 +102,21 @@ public:
     /// where the next run's event ids continue.
     virtual UnfinishedJobs requeue_unfinished(int max_attempts) = 0;
     virtual std::map<JobStatus, std::size_t> count_by_status() const = 0;
+
+    /// The shared queue: takes the oldest job that no live process holds (queued, or running
+    /// under a lease that expired because its process died or was cut off) and makes it running
+    /// under `owner`'s lease for `lease`, its attempt counted and its scene included. A job taken
+    /// back from an expired lease continues its event ids a million above the stored sequence.
+    /// Before choosing, ends the expired jobs that must not run again: those with a cancel
+    /// request end cancelled, those started `max_attempts` times end failed. Concurrent claims
+    /// (threads, or processes on a shared store) never take the same job. Nothing when no job
+    /// is waiting.
+    virtual std::optional<JobRecord> claim(const std::string& owner,
+                                           std::chrono::milliseconds lease, int max_attempts) = 0;
+    /// The heartbeat of a running job: extends `owner`'s lease to `lease` from now, if `owner`
+    /// still holds it.
+    virtual LeaseRenewal renew_lease(const std::string& id, const std::string& owner,
+                                     std::chrono::milliseconds lease) = 0;
 
     /// Whether the store takes writes now, and why not.
     virtual StoreHealth health() = 0;

@@ -51,6 +51,10 @@ public:
     /// The directory lock proves that no other process runs these jobs any more.
     UnfinishedJobs requeue_unfinished(int max_attempts) override;
     std::map<JobStatus, std::size_t> count_by_status() const override;
+    std::optional<JobRecord> claim(const std::string& owner, std::chrono::milliseconds lease,
+                                   int max_attempts) override;
+    LeaseRenewal renew_lease(const std::string& id, const std::string& owner,
+                             std::chrono::milliseconds lease) override;
     /// Unwritable from a failed write until a write that adds rows succeeds, or the disk (and
     /// max_bytes) has room for results again.
     StoreHealth health() override;
@@ -66,6 +70,16 @@ private:
     /// a failure marks it unwritable, a success that `adds_rows` writable again.
     template <typename Write>
     void write(Write&& write, bool adds_rows);
+    /// Runs `body` in one immediate (write-locked) transaction; the caller holds mutex_.
+    template <typename Body>
+    void transaction(Body&& body);
+    /// Ids of the jobs `where` selects, oldest first; the caller holds mutex_.
+    std::vector<std::string> ids(const std::string& where) const;
+    /// Ends the jobs whose process is gone (`dead` selects the running ones) that must not run
+    /// again: a cancel request makes them cancelled, `max_attempts` starts failed. The caller
+    /// holds mutex_ in a transaction.
+    void end_dead_jobs(const std::string& dead, UnixMillis now, int max_attempts,
+                       UnfinishedJobs& out);
     void finish_locked(const std::string& id, JobStatus status, UnixMillis finished,
                        const JobProgress& progress, const std::string& error,
                        const std::optional<std::string>& result_json,
