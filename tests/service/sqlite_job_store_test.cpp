@@ -1,5 +1,6 @@
-// The SQLite job store on its own: the lock on its directory, private files, attempts counted
-// across process deaths, cancels that survive a restart, and a full store reported unwritable.
+// What only the SQLite job store does (job_store_test.cpp holds what every store does): the lock
+// on its directory, private files, attempts counted across process deaths, cancels that survive a
+// restart, and a full store reported unwritable.
 #include "radiant/server/sqlite_job_store.h"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace radiant::server;
 
-class JobStoreTest : public ::testing::Test {
+class SqliteJobStoreTest : public ::testing::Test {
 protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
@@ -42,7 +43,7 @@ protected:
     fs::path dir_;
 };
 
-TEST_F(JobStoreTest, ASecondStoreOnTheDirectoryIsRefused) {
+TEST_F(SqliteJobStoreTest, ASecondStoreOnTheDirectoryIsRefused) {
     {
         SqliteJobStore first(dir_);
         try {
@@ -58,7 +59,7 @@ TEST_F(JobStoreTest, ASecondStoreOnTheDirectoryIsRefused) {
     SqliteJobStore again(dir_);  // the lock goes with its holder
 }
 
-TEST_F(JobStoreTest, DirectoryIsPrivateAndFilesTooEvenWhenTheyWereNot) {
+TEST_F(SqliteJobStoreTest, DirectoryIsPrivateAndFilesTooEvenWhenTheyWereNot) {
     const mode_t old_umask = ::umask(022);
     fs::create_directories(dir_);
     fs::permissions(dir_, fs::perms(0755));
@@ -82,7 +83,7 @@ TEST_F(JobStoreTest, DirectoryIsPrivateAndFilesTooEvenWhenTheyWereNot) {
     ::umask(old_umask);
 }
 
-TEST_F(JobStoreTest, AJobWhoseProcessDiedTwiceFailsWithTheReason) {
+TEST_F(SqliteJobStoreTest, AJobWhoseProcessDiedTwiceFailsWithTheReason) {
     const JobRecord j = job();
     const JobRecord released = job();
     {
@@ -113,7 +114,7 @@ TEST_F(JobStoreTest, AJobWhoseProcessDiedTwiceFailsWithTheReason) {
     EXPECT_GT(failed->finished, 0);
 }
 
-TEST_F(JobStoreTest, AnAcceptedCancelSurvivesTheProcess) {
+TEST_F(SqliteJobStoreTest, AnAcceptedCancelSurvivesTheProcess) {
     const JobRecord j = job();
     {
         SqliteJobStore store(dir_);
@@ -128,7 +129,7 @@ TEST_F(JobStoreTest, AnAcceptedCancelSurvivesTheProcess) {
     EXPECT_EQ(store.find(j.id, false)->status, JobStatus::cancelled);
 }
 
-TEST_F(JobStoreTest, AFullStoreIsUnwritable) {
+TEST_F(SqliteJobStoreTest, AFullStoreIsUnwritable) {
     JobStoreOptions options;
     options.max_bytes = 256 << 10;
     SqliteJobStore store(dir_, options);
