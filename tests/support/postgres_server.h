@@ -83,6 +83,27 @@ public:
         return "host=" + dir_.string() + " port=" + kPort + " user=radiant dbname=" + database;
     }
 
+    /// The same as a postgresql:// URI, as radiantd --store takes it.
+    std::string url(const std::string& database) const {
+        return "postgresql://radiant@/" + database + "?host=" + dir_.string() + "&port=" + kPort;
+    }
+
+    /// The first row `sql` returns on `database`, its values as text (empty: no row).
+    std::vector<std::string> query_row(const std::string& database, const std::string& sql) const {
+        PGconn* conn = PQconnectdb(uri(database).c_str());
+        PGresult* result = PQexec(conn, sql.c_str());
+        const bool ok = PQresultStatus(result) == PGRES_TUPLES_OK;
+        const std::string why = PQerrorMessage(conn);
+        std::vector<std::string> row;
+        for (int col = 0; ok && PQntuples(result) > 0 && col < PQnfields(result); ++col) {
+            row.emplace_back(PQgetvalue(result, 0, col));
+        }
+        PQclear(result);
+        PQfinish(conn);
+        if (!ok) throw std::runtime_error(sql + ": " + why);
+        return row;
+    }
+
     /// Creates an empty database named `name` (letters, digits and underscores).
     void create_database(const std::string& name) const {
         PGconn* conn = PQconnectdb(uri("postgres").c_str());

@@ -120,6 +120,10 @@ public:
 
     /// Whether the store takes writes now, and why not.
     virtual StoreHealth health() = 0;
+
+    /// True when other processes may use the store at the same time: then the queue lives in the
+    /// store (claim, renew_lease), not in one process's memory.
+    virtual bool shared() const = 0;
 };
 
 }  // namespace radiant::server

@@ -55,6 +55,7 @@ public:
                              std::chrono::milliseconds lease) override;
     /// Unwritable while the server cannot be reached or refuses writes.
     StoreHealth health() override;
+    bool shared() const override { return true; }
 
     /// The schema version the database holds.
     int schema_version() const;

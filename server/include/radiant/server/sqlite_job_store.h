@@ -58,6 +58,8 @@ public:
     /// Unwritable from a failed write until a write that adds rows succeeds, or the disk (and
     /// max_bytes) has room for results again.
     StoreHealth health() override;
+    /// One process owns the directory (its lock).
+    bool shared() const override { return false; }
 
 private:
     /// Pragmas and tables, after the lock is held and the file is open.
