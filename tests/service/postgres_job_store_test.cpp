@@ -4,35 +4,20 @@
 #include "radiant/server/postgres_job_store.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "postgres_server.h"
+#include "postgres_fixture.h"
 
 namespace {
 
 using namespace radiant::server;
 using radiant::test::shared_postgres;
 
-class PostgresJobStoreTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const std::string missing = radiant::test::postgres_missing();
-        if (!missing.empty()) GTEST_SKIP() << missing;
-        database_ = "pg_store_" + std::to_string(getpid()) + "_" + std::to_string(++count_);
-        shared_postgres().create_database(database_);
-    }
-    std::string uri() const { return shared_postgres().uri(database_); }
-
-    std::string database_;
-
-private:
-    static inline int count_ = 0;
-};
+using PostgresJobStoreTest = radiant::test::PostgresFixture;
 
 TEST_F(PostgresJobStoreTest, ReplicasStartingTogetherMigrateTheSchemaOnce) {
     std::vector<std::unique_ptr<PostgresJobStore>> replicas(3);

@@ -1,7 +1,6 @@
 // Several job queues (as several radiantd would) on one PostgreSQL store: they share one queue,
 // run each job once, hear a cancel accepted by another, and take over the job of one that died.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <memory>
@@ -9,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "postgres_server.h"
+#include "postgres_fixture.h"
 #include "radiant/server/job_queue.h"
 #include "radiant/server/postgres_job_store.h"
 #include "service_scenes.h"
@@ -18,7 +17,6 @@ namespace {
 
 using namespace radiant::server;
 using namespace std::chrono_literals;
-using radiant::test::shared_postgres;
 
 /// One radiantd as the queue sees it: its own connection to the shared store, and its workers.
 struct Replica {
@@ -33,16 +31,8 @@ struct Replica {
     std::unique_ptr<JobQueue> queue;
 };
 
-class SharedQueueTest : public ::testing::Test {
+class SharedQueueTest : public radiant::test::PostgresFixture {
 protected:
-    void SetUp() override {
-        const std::string missing = radiant::test::postgres_missing();
-        if (!missing.empty()) GTEST_SKIP() << missing;
-        database_ = "shared_queue_" + std::to_string(getpid()) + "_" + std::to_string(++count_);
-        shared_postgres().create_database(database_);
-    }
-    std::string uri() const { return shared_postgres().uri(database_); }
-
     /// Polls `queue` until job `id` is `want` or `seconds` pass; returns its last status.
     static JobStatus wait_for(JobQueue& queue, const std::string& id, JobStatus want,
                               double seconds = 20) {
@@ -55,10 +45,6 @@ protected:
         }
         return status;
     }
-
-private:
-    std::string database_;
-    static inline int count_ = 0;
 };
 
 TEST_F(SharedQueueTest, JobsSubmittedToEitherReplicaRunOnceAndAreSeenByBoth) {
