@@ -2,9 +2,12 @@
 
 #include <spdlog/spdlog.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <exception>
 #include <stdexcept>
 #include <utility>
@@ -21,8 +24,19 @@ namespace {
 /// Least time between two snapshots of a running job: at most two `radiosity` events a second
 /// reach a client, and the engine builds a display mesh no more often than that.
 constexpr double kSnapshotSeconds = 0.5;
-/// Running jobs' progress reaches the store at most this often (it is also in memory at once).
+/// Running jobs' progress reaches the store at most this often (it is also in memory at once);
+/// leases on a shared store are renewed as often.
 constexpr auto kProgressWritePeriod = std::chrono::seconds(1);
+/// An idle worker on a shared store asks for a job this often: other processes' submissions do
+/// not wake it (a job submitted here does at once).
+constexpr auto kClaimPollPeriod = std::chrono::milliseconds(500);
+
+/// "host:pid": unique among the processes sharing a store, and says where a job runs.
+std::string default_replica_name() {
+    char host[256] = {};
+    if (::gethostname(host, sizeof host - 1) != 0) std::snprintf(host, sizeof host, "radiantd");
+    return std::string(host) + ":" + std::to_string(::getpid());
+}
 
 JobProgress job_progress(const Progress& p, std::uint64_t sequence) {
     JobProgress q;
@@ -93,6 +107,8 @@ struct JobQueue::LiveJob final : SolveObserver {
     const std::string id;
     CancellationToken token;
     std::atomic<bool> user_cancelled{false};  ///< false + token cancelled: shutdown
+    /// The shared store gave the job to another process: this run stores nothing.
+    std::atomic<bool> lease_lost{false};
     mutable std::mutex mutex;
     JobRecord record;    ///< guarded by mutex; never holds the scene text
     RunningScene scene;  ///< guarded by mutex
@@ -103,8 +119,14 @@ struct JobQueue::LiveJob final : SolveObserver {
 };
 
 JobQueue::JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options)
-    : store_(store), metrics_(metrics), options_(options) {
-    const UnfinishedJobs unfinished = store_.requeue_unfinished(kMaxJobAttempts);
+    : store_(store),
+      metrics_(metrics),
+      options_(options),
+      replica_(options.replica.empty() ? default_replica_name() : options.replica) {
+    // On a shared store other processes may be running the unfinished jobs; those whose process
+    // died lose their lease, and a claim takes them.
+    const UnfinishedJobs unfinished =
+        store_.shared() ? UnfinishedJobs{} : store_.requeue_unfinished(kMaxJobAttempts);
     for (const std::string& id : unfinished.cancelled) {
         spdlog::info("job {} cancelled: its cancel was accepted before the restart", id);
     }
@@ -136,9 +158,13 @@ SubmitOutcome JobQueue::submit(const std::string& scene_json, const std::string&
     };
     if (auto replayed = replay()) return *replayed;
 
+    // A shared store counts every process's waiting jobs; asked before the lock, as the store
+    // may be a network away.
+    const std::size_t shared_waiting = store_.shared() ? queue_length() : 0;
     const std::lock_guard lock(mutex_);
+    const std::size_t waiting = store_.shared() ? shared_waiting : queue_.size();
     if (stopping_) return {SubmitOutcome::Kind::shutting_down, {}, {}};
-    if (queue_.size() >= options_.queue_limit) return {SubmitOutcome::Kind::queue_full, {}, {}};
+    if (waiting >= options_.queue_limit) return {SubmitOutcome::Kind::queue_full, {}, {}};
     JobRecord record;
     record.id = new_job_id();
     record.status = JobStatus::queued;
@@ -154,11 +180,13 @@ SubmitOutcome JobQueue::submit(const std::string& scene_json, const std::string&
         throw;
     }
     record.scene_json.clear();
-    auto job = std::make_shared<LiveJob>(record);
-    queue_.push_back(job);
-    live_.emplace(record.id, job);
+    if (!store_.shared()) {  // else the store is the queue
+        auto job = std::make_shared<LiveJob>(record);
+        queue_.push_back(job);
+        live_.emplace(record.id, job);
+    }
     wake_.notify_one();
-    spdlog::info("job {} queued ({} waiting)", record.id, queue_.size());
+    spdlog::info("job {} queued ({} waiting)", record.id, waiting + 1);
     return {SubmitOutcome::Kind::accepted, std::move(record), {}};
 }
 
@@ -237,10 +265,30 @@ std::optional<JobRecord> JobQueue::cancel(const std::string& id) {
             return job->copy();
         }
     }
+    if (store_.shared()) {
+        const std::optional<JobRecord> stored = store_.find(id, false);
+        if (stored && stored->status == JobStatus::running) {
+            // The process running it sees the request at its next heartbeat.
+            store_.request_cancel(id);
+            spdlog::info("job {} cancel requested (it runs elsewhere)", id);
+        } else if (stored && stored->status == JobStatus::queued) {
+            // Requested first: a process that claims the job meanwhile finds it no longer
+            // running at its next heartbeat and stores nothing.
+            store_.request_cancel(id);
+            store_.finish(id, JobStatus::cancelled, now_millis(), stored->progress, "",
+                          std::nullopt);
+            spdlog::info("job {} queued -> cancelled", id);
+        }
+    }
     return find(id);
 }
 
 std::size_t JobQueue::queue_length() const {
+    if (store_.shared()) {
+        const auto counts = store_.count_by_status();
+        const auto queued = counts.find(JobStatus::queued);
+        return queued == counts.end() ? 0 : queued->second;
+    }
     const std::lock_guard lock(mutex_);
     return queue_.size();
 }
@@ -296,21 +344,78 @@ void JobQueue::write_progress() {
                 break;  // still refused; the next period tries again
             }
         }
+        if (store_.shared()) renew_leases();
         lock.lock();
         for (const std::string& id : stored) unstored_.erase(id);
     }
 }
 
+void JobQueue::renew_leases() {
+    std::vector<std::shared_ptr<LiveJob>> running;
+    {
+        const std::lock_guard lock(mutex_);
+        for (const auto& [id, job] : live_) {
+            if (job->copy().status == JobStatus::running) running.push_back(job);
+        }
+    }
+    for (const auto& job : running) {
+        try {
+            const LeaseRenewal renewal = store_.renew_lease(job->id, replica_, options_.lease);
+            if (!renewal.held) {
+                spdlog::warn("job {}: its lease went to another radiantd; this run stops", job->id);
+                job->lease_lost = true;
+                job->token.cancel();
+            } else if (renewal.cancel_requested && !job->user_cancelled) {
+                spdlog::info("job {} cancel requested (accepted elsewhere)", job->id);
+                job->user_cancelled = true;
+                job->token.cancel();
+            }
+        } catch (const std::exception& e) {
+            // The lease runs on; a store back within it loses nothing.
+            spdlog::error("job {}: lease not renewed: {}", job->id, e.what());
+        }
+    }
+}
+
+std::shared_ptr<JobQueue::LiveJob> JobQueue::next_job() {
+    if (store_.shared()) return claim_job();
+    std::unique_lock lock(mutex_);
+    wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
+    if (stopping_) return nullptr;
+    std::shared_ptr<LiveJob> job = queue_.front();
+    queue_.pop_front();
+    return job;
+}
+
+std::shared_ptr<JobQueue::LiveJob> JobQueue::claim_job() {
+    for (;;) {
+        {
+            const std::lock_guard lock(mutex_);
+            if (stopping_) return nullptr;
+        }
+        std::optional<JobRecord> claimed;
+        try {
+            claimed = store_.claim(replica_, options_.lease, kMaxJobAttempts);
+        } catch (const std::exception& e) {
+            spdlog::error("cannot claim a job: {}", e.what());
+        }
+        std::unique_lock lock(mutex_);
+        if (claimed) {
+            claimed->scene_json.clear();  // run() reads it when it needs it
+            auto job = std::make_shared<LiveJob>(std::move(*claimed));
+            live_.emplace(job->id, job);
+            if (stopping_) job->token.cancel();  // run() hands it back at once
+            spdlog::info("job {} claimed by {}", job->id, replica_);
+            return job;
+        }
+        wake_.wait_for(lock, kClaimPollPeriod);
+    }
+}
+
 void JobQueue::work() {
     for (;;) {
-        std::shared_ptr<LiveJob> job;
-        {
-            std::unique_lock lock(mutex_);
-            wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
-            if (stopping_) return;
-            job = queue_.front();
-            queue_.pop_front();
-        }
+        const std::shared_ptr<LiveJob> job = next_job();
+        if (!job) return;
         try {
             run(job);
         } catch (const std::exception& e) {
@@ -337,7 +442,8 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
         job->record.status = JobStatus::running;
         job->record.started = now_millis();
     }
-    store_.mark_running(id, job->copy().started);
+    // A claim from a shared store made the job running already, under this process's lease.
+    if (!store_.shared()) store_.mark_running(id, job->copy().started);
     spdlog::info("job {} queued -> running", id);
 
     Result result;
@@ -365,6 +471,10 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
             result.status = SolveStatus::failed;
             result.error = std::string("internal error: ") + e.what();
         }
+    }
+    if (job->lease_lost) {
+        spdlog::info("job {}: stopped, another radiantd runs it now", id);
+        return;
     }
     // A solve that converged just as shutdown began is kept; anything cut short runs again.
     if (job->token.cancelled() && !job->user_cancelled && result.status != SolveStatus::converged) {

@@ -3,6 +3,7 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -20,10 +21,11 @@
 #include "radiant/server/config.h"
 #include "radiant/server/handlers.h"
 #include "radiant/server/job_queue.h"
-#include "radiant/server/job_store.h"
 #include "radiant/server/listener.h"
 #include "radiant/server/metrics.h"
+#include "radiant/server/postgres_job_store.h"
 #include "radiant/server/router.h"
+#include "radiant/server/sqlite_job_store.h"
 #include "radiant/server/static_files.h"
 #include "radiant/solve.h"
 
@@ -40,6 +42,19 @@ constexpr std::size_t kMostWaitingDrawings = 16;
 
 std::size_t mebibytes(double mb) { return static_cast<std::size_t>(mb * 1024 * 1024); }
 
+/// --store URI's PostgreSQL, or SQLite under --data. The URI is never logged: it may hold a
+/// password.
+std::unique_ptr<JobStore> open_store(const ServerConfig& config) {
+    if (!config.store_uri.empty()) return std::make_unique<PostgresJobStore>(config.store_uri);
+    JobStoreOptions options;
+    options.max_bytes = mebibytes(config.max_store_mb);
+    return std::make_unique<SqliteJobStore>(config.data_dir, options);
+}
+
+bool is_postgresql_uri(const std::string& uri) {
+    return uri.starts_with("postgresql://") || uri.starts_with("postgres://");
+}
+
 int serve(const ServerConfig& config) {
     const auto listen = parse_listen(config.listen);
     if (!listen) {
@@ -55,13 +70,18 @@ int serve(const ServerConfig& config) {
             return 2;
         }
     }
-    JobStoreOptions store_options;
-    store_options.max_bytes = mebibytes(config.max_store_mb);
-    JobStore store(config.data_dir, store_options);
+    if (!config.store_uri.empty() && !is_postgresql_uri(config.store_uri)) {
+        spdlog::error("--store must be a postgresql:// URI");
+        return 2;
+    }
+    const std::unique_ptr<JobStore> owned_store = open_store(config);
+    JobStore& store = *owned_store;
     Metrics metrics;
     JobQueueOptions queue_options;
     queue_options.workers = config.workers;
     queue_options.queue_limit = config.queue_limit;
+    queue_options.replica = config.replica;
+    queue_options.lease = std::chrono::milliseconds(static_cast<long>(config.lease_seconds * 1000));
     queue_options.job_seconds = config.job_seconds;
     queue_options.job_memory_bytes = config.job_memory_mb > 0
                                          ? mebibytes(config.job_memory_mb)
@@ -98,10 +118,11 @@ int serve(const ServerConfig& config) {
                 static_cast<unsigned>(bound.port()));
     std::fflush(stdout);
     spdlog::info(
-        "radiantd listening on {}:{}, data in {}, {} worker(s), each job up to {:.0f} s "
+        "radiantd listening on {}:{}, {}, {} worker(s), each job up to {:.0f} s "
         "and {} MiB{}",
-        bound.address().to_string(), bound.port(), config.data_dir, config.workers,
-        config.job_seconds, queue_options.job_memory_bytes >> 20,
+        bound.address().to_string(), bound.port(),
+        config.store_uri.empty() ? "data in " + config.data_dir : std::string("PostgreSQL store"),
+        config.workers, config.job_seconds, queue_options.job_memory_bytes >> 20,
         ctx.access.token.empty() ? "" : ", bearer token required");
     listener->run();
 
@@ -138,6 +159,18 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--data", config.data_dir, "directory of the job store")
         ->envname("RADIANT_DATA")
+        ->capture_default_str();
+    app.add_option("--store", config.store_uri,
+                   "postgresql://… : a job store shared by several radiantd (instead of --data)")
+        ->envname("RADIANT_STORE");
+    app.add_option("--replica", config.replica,
+                   "this radiantd's name in a shared store's job leases (default: host:pid)")
+        ->envname("RADIANT_REPLICA");
+    app.add_option("--lease-seconds", config.lease_seconds,
+                   "how long a shared store's job waits for a replica that stopped renewing its "
+                   "lease (died) before another one takes it")
+        ->envname("RADIANT_LEASE_SECONDS")
+        ->check(CLI::Range(2.0, 3600.0))
         ->capture_default_str();
     app.add_option("--workers", config.workers, "concurrent solves (each uses every core)")
         ->envname("RADIANT_WORKERS")

@@ -17,6 +17,7 @@
 #include "radiant/proto/scene_json.h"
 #include "radiant/proto/sensors_csv.h"
 #include "radiant/server/config.h"
+#include "radiant/server/sqlite_job_store.h"
 #include "service_scenes.h"
 #include "test_files.h"
 
@@ -33,7 +34,7 @@ public:
         : dir_(fs::temp_directory_path() /
                ("radiant_router_test_" + std::to_string(getpid()) + "_" + std::to_string(++n_))) {
         fs::remove_all(dir_);
-        store_ = std::make_unique<JobStore>(dir_);
+        store_ = std::make_unique<SqliteJobStore>(dir_);
         jobs_ = std::make_unique<JobQueue>(*store_, metrics_, options);
         ctx_ = std::make_unique<ServiceContext>(
             ServiceContext{*jobs_, *store_, metrics_, max_body_bytes});
@@ -404,7 +405,7 @@ TEST(JobQueue, UnfinishedJobsRunAgainAfterRestart) {
     job.scene_json = radiant::test::tiny_room();
     job.created = now_millis();
     {
-        JobStore store(dir);
+        SqliteJobStore store(dir);
         store.insert(job);
         store.mark_running(job.id, now_millis());  // as if the process died mid-solve
         JobProgress seen;
@@ -412,7 +413,7 @@ TEST(JobQueue, UnfinishedJobsRunAgainAfterRestart) {
         store.save_progress(job.id, seen);
     }
     {
-        JobStore store(dir);
+        SqliteJobStore store(dir);
         Metrics metrics;
         JobQueue queue(store, metrics, {});
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);

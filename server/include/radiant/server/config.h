@@ -13,6 +13,11 @@ namespace radiant::server {
 struct ServerConfig {
     std::string listen = "127.0.0.1:8080";  ///< ADDR:PORT; port 0 picks a free one
     std::string data_dir = "./data";
+    /// A postgresql:// URI: a store that several radiantd share, instead of SQLite in data_dir.
+    std::string store_uri;
+    std::string replica;  ///< this process's name among those sharing a store (default host:pid)
+    /// How long a shared store's job stays with a replica that stopped renewing its lease.
+    double lease_seconds = 10;
     std::size_t workers = 1;       ///< concurrent solves; each one uses every core
     std::size_t queue_limit = 64;  ///< waiting jobs; bounded so memory and latency stay bounded
     /// Largest request body; the scene parser's own limit, so nothing bigger is ever buffered.

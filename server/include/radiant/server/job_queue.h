@@ -3,6 +3,7 @@
 // HTTP sessions read when they choose to (slow clients never block a solve).
 #pragma once
 
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -30,6 +31,12 @@ struct JobQueueOptions {
     /// memory shared among the workers.
     std::size_t job_memory_bytes = 0;
     int solve_threads = 0;  ///< 0: all cores
+    /// On a shared store: this process's name in job leases (default: host name and pid).
+    std::string replica;
+    /// On a shared store: how long a replica holds a job it no longer renews (it died or was
+    /// cut off) before another one takes it. Renewed every second, so a few missed heartbeats
+    /// (a slow store, a busy machine) cost nothing; a dead replica's job restarts this late.
+    std::chrono::milliseconds lease{10000};
 };
 
 /// A solve started this many times whose process died each time is not run again: it fails.
@@ -52,7 +59,8 @@ class JobQueue {
 public:
     /// Re-queues what the store holds as queued or running (an earlier process stopped before
     /// finishing them; see JobStore::requeue_unfinished for those it ends instead), then starts
-    /// the workers.
+    /// the workers. On a shared store (JobStore::shared) nothing is queued in memory: workers
+    /// claim jobs from the store under a lease they renew, so several processes share one queue.
     JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options);
     /// Calls shutdown().
     ~JobQueue();
@@ -77,6 +85,7 @@ public:
     /// left as they are. Returns the job as it is now, or nothing for an unknown id. Thread-safe.
     std::optional<JobRecord> cancel(const std::string& id);
 
+    /// Jobs waiting for a worker (on a shared store: for any process's worker).
     std::size_t queue_length() const;
     bool shutting_down() const;
 
@@ -87,6 +96,14 @@ public:
 private:
     struct LiveJob;
     void work();
+    /// The next job: from the in-memory queue, or claimed from a shared store. Null once
+    /// stopping.
+    std::shared_ptr<LiveJob> next_job();
+    /// Claims a job from the shared store, waiting for one; null once stopping.
+    std::shared_ptr<LiveJob> claim_job();
+    /// Renews the leases of this process's running jobs on a shared store; stops the solves whose
+    /// lease went to another process, or whose cancel another process accepted.
+    void renew_leases();
     void run(const std::shared_ptr<LiveJob>& job);
     /// Stores a finished job's outcome; when the store refuses it, the job fails with the reason,
     /// in the store if a smaller write still fits, else in memory (unstored_).
@@ -112,6 +129,7 @@ private:
     /// Finished jobs whose final state the store refused (disk full); without their results.
     std::unordered_map<std::string, JobRecord> unstored_;
     std::vector<std::thread> workers_;  ///< solvers and the progress writer
+    std::string replica_;               ///< owner name in the shared store's leases
 };
 
 }  // namespace radiant::server

@@ -1,11 +1,9 @@
-// The durable job store: one SQLite database under --data, so an accepted job survives a restart
-// or a crash (contract §4).
+// The durable job store's interface and the types its implementations share.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
-#include <filesystem>
 #include <map>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -13,8 +11,6 @@
 
 #include "radiant/server/job.h"
 #include "radiant/server/job_snapshot.h"
-
-struct sqlite3;
 
 namespace radiant::server {
 
@@ -37,12 +33,6 @@ private:
     bool unwritable_;
 };
 
-struct JobStoreOptions {
-    /// The database stops growing at this size (0: only the disk limits it); a write that would
-    /// need more fails as on a full disk.
-    std::size_t max_bytes = 0;
-};
-
 /// Whether the store takes writes; `reason` says why not.
 struct StoreHealth {
     bool writable = true;
@@ -56,80 +46,84 @@ struct UnfinishedJobs {
     std::vector<std::string> cancelled;  ///< a cancel was accepted before the process died
 };
 
-/// Thread-safe: one connection guarded by a mutex. Every statement is short (a row or a page), so
-/// contention is not worth a connection pool at this scale. Throws StoreError on SQLite failures
-/// (disk full, corruption); a failed write marks the store unwritable until one succeeds again.
+/// What renewing a lease tells the replica that runs the job.
+struct LeaseRenewal {
+    /// False: the lease had expired and the job went to another replica (or ended); the solve
+    /// must stop and store nothing.
+    bool held = false;
+    bool cancel_requested = false;  ///< a cancel accepted by any replica
+};
+
+/// The error a job gets when its solve was started `max_attempts` times and never finished.
+std::string attempts_exhausted_error(int max_attempts);
+
+/// Where jobs, their progress, results and meshes live, so that an accepted job survives a
+/// restart or a crash (contract §4). Two implementations: SqliteJobStore (one file under --data,
+/// the default) and, later, a server database shared by several radiantd. Every method is
+/// thread-safe and throws StoreError when the store cannot run it.
 class JobStore {
 public:
-    /// Opens (creating when missing) `data_dir`/radiant.db in WAL mode. Takes an exclusive lock
-    /// on the directory first (a second process on the same directory would run every job
-    /// twice): throws std::runtime_error naming the holder's pid when another process has it.
-    /// The directory is made 0700 and the files in it 0600: scenes may be confidential.
-    explicit JobStore(const std::filesystem::path& data_dir, JobStoreOptions options = {});
-    ~JobStore();
+    virtual ~JobStore() = default;
+    JobStore() = default;
     JobStore(const JobStore&) = delete;
     JobStore& operator=(const JobStore&) = delete;
 
-    void insert(const JobRecord& job);
+    virtual void insert(const JobRecord& job) = 0;
     /// `with_scene` false leaves scene_json empty: status reads never need megabytes of scene.
-    std::optional<JobRecord> find(const std::string& id, bool with_scene = true) const;
-    std::optional<JobRecord> find_by_idempotency_key(const std::string& key) const;
+    virtual std::optional<JobRecord> find(const std::string& id, bool with_scene = true) const = 0;
+    virtual std::optional<JobRecord> find_by_idempotency_key(const std::string& key) const = 0;
     /// Newest first; `after` is the id of the last job of the previous page (empty: from the top).
-    std::vector<JobRecord> list(std::size_t limit, const std::string& after) const;
+    virtual std::vector<JobRecord> list(std::size_t limit, const std::string& after) const = 0;
 
-    /// Counts an attempt: a process that dies while the job runs leaves the count raised.
-    void mark_running(const std::string& id, UnixMillis started);
+    /// Counts an attempt: a process that dies while the job runs leaves the count raised. The job
+    /// is held for the life of this process (no lease: the single-process queue's way).
+    virtual void mark_running(const std::string& id, UnixMillis started) = 0;
     /// A running job that a clean shutdown stopped goes back to queued, its attempt uncounted.
-    void release(const std::string& id);
+    virtual void release(const std::string& id) = 0;
     /// Records that a cancel was accepted, before the answer says so: a process that dies before
     /// the solve stops leaves the job cancelled, not queued again. No-op for finished jobs.
-    void request_cancel(const std::string& id);
-    void save_progress(const std::string& id, const JobProgress& progress);
+    virtual void request_cancel(const std::string& id) = 0;
+    virtual void save_progress(const std::string& id, const JobProgress& progress) = 0;
     /// The job's warnings (a JSON array), as GET /v1/jobs/{id} reports them.
-    void save_warnings(const std::string& id, const nlohmann::json& warnings);
+    virtual void save_warnings(const std::string& id, const nlohmann::json& warnings) = 0;
     /// Final state, progress and (optionally) the result document (without its mesh) and the
     /// solved mesh, in one transaction.
-    void finish(const std::string& id, JobStatus status, UnixMillis finished,
-                const JobProgress& progress, const std::string& error,
-                const std::optional<std::string>& result_json,
-                const std::optional<StoredMesh>& mesh = std::nullopt);
-    std::optional<std::string> result(const std::string& id) const;
-    std::optional<StoredMesh> mesh(const std::string& id) const;
+    virtual void finish(const std::string& id, JobStatus status, UnixMillis finished,
+                        const JobProgress& progress, const std::string& error,
+                        const std::optional<std::string>& result_json,
+                        const std::optional<StoredMesh>& mesh = std::nullopt) = 0;
+    virtual std::optional<std::string> result(const std::string& id) const = 0;
+    virtual std::optional<StoredMesh> mesh(const std::string& id) const = 0;
 
     /// Jobs that were queued or running when the last process stopped. Those with a cancel
     /// request end cancelled; those started `max_attempts` times end failed (each start killed
     /// its process: out of memory, most likely); the rest go back to queued (a solve that did not
     /// finish starts over), their progress to just a sequence a million above the stored one,
     /// where the next run's event ids continue.
-    UnfinishedJobs requeue_unfinished(int max_attempts);
-    std::map<JobStatus, std::size_t> count_by_status() const;
+    virtual UnfinishedJobs requeue_unfinished(int max_attempts) = 0;
+    virtual std::map<JobStatus, std::size_t> count_by_status() const = 0;
 
-    /// Unwritable from a failed write until a write that adds rows succeeds, or the disk (and
-    /// max_bytes) has room for results again.
-    StoreHealth health();
+    /// The shared queue: takes the oldest job that no live process holds (queued, or running
+    /// under a lease that expired because its process died or was cut off) and makes it running
+    /// under `owner`'s lease for `lease`, its attempt counted and its scene included. A job taken
+    /// back from an expired lease continues its event ids a million above the stored sequence.
+    /// Before choosing, ends the expired jobs that must not run again: those with a cancel
+    /// request end cancelled, those started `max_attempts` times end failed. Concurrent claims
+    /// (threads, or processes on a shared store) never take the same job. Nothing when no job
+    /// is waiting.
+    virtual std::optional<JobRecord> claim(const std::string& owner,
+                                           std::chrono::milliseconds lease, int max_attempts) = 0;
+    /// The heartbeat of a running job: extends `owner`'s lease to `lease` from now, if `owner`
+    /// still holds it.
+    virtual LeaseRenewal renew_lease(const std::string& id, const std::string& owner,
+                                     std::chrono::milliseconds lease) = 0;
 
-private:
-    /// Pragmas and tables, after the lock is held and the file is open.
-    void initialise(const JobStoreOptions& options);
-    void exec(const char* sql) const;
-    std::size_t page_size() const;
-    /// What a write can still add: free disk space, or room under max_bytes.
-    std::size_t free_bytes() const;
-    /// Runs `write` (the caller holds mutex_) and keeps the store's health from its outcome:
-    /// a failure marks it unwritable, a success that `adds_rows` writable again.
-    template <typename Write>
-    void write(Write&& write, bool adds_rows);
-    void finish_locked(const std::string& id, JobStatus status, UnixMillis finished,
-                       const JobProgress& progress, const std::string& error,
-                       const std::optional<std::string>& result_json,
-                       const std::optional<StoredMesh>& mesh);
-    const std::filesystem::path data_dir_;
-    /// Upgrades a store written by an older radiantd in place.
-    void add_column_if_missing(const char* table, const char* column, const char* definition) const;
-    sqlite3* db_ = nullptr;
-    int lock_fd_ = -1;
-    mutable std::mutex mutex_;
-    std::string write_error_;  ///< guarded by mutex_; empty while writes succeed
+    /// Whether the store takes writes now, and why not.
+    virtual StoreHealth health() = 0;
+
+    /// True when other processes may use the store at the same time: then the queue lives in the
+    /// store (claim, renew_lease), not in one process's memory.
+    virtual bool shared() const = 0;
 };
 
 }  // namespace radiant::server
