@@ -15,6 +15,7 @@
 
 #include "radiant/server/router.h"
 #include "radiant/server/session.h"
+#include "radiant/server/sqlite_job_store.h"
 
 namespace {
 
@@ -46,7 +47,7 @@ private:
         fs::path path;
     } dir_;
     Metrics metrics_;
-    JobStore store_;
+    SqliteJobStore store_;
     JobQueue jobs_;
     ServiceContext ctx_;
     Router router_;

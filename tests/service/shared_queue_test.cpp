@@ -73,9 +73,9 @@ TEST_F(SharedQueueTest, ACancelAcceptedByOneReplicaStopsTheSolveOnAnother) {
     ASSERT_EQ(wait_for(*a.queue, id, JobStatus::running), JobStatus::running);
     // Whichever replica claimed it, the other one takes the cancel.
     std::this_thread::sleep_for(200ms);
-    JobQueue& runner = a.queue->scene_name(id).empty() ? *b.queue : *a.queue;
+    JobQueue& runner = a.queue->running_scene(id).name.empty() ? *b.queue : *a.queue;
     JobQueue& other = &runner == a.queue.get() ? *b.queue : *a.queue;
-    ASSERT_FALSE(runner.scene_name(id).empty()) << "neither replica runs the job";
+    ASSERT_FALSE(runner.running_scene(id).name.empty()) << "neither replica runs the job";
     const auto asked = std::chrono::steady_clock::now();
     other.cancel(id);
     EXPECT_EQ(wait_for(other, id, JobStatus::cancelled, 10), JobStatus::cancelled);
