@@ -185,6 +185,18 @@ Result lighting_solution_from_json(const nlohmann::json& doc, std::string& error
             SensorResult r;
             r.name = read.text(s, "name");
             r.illuminance.resize(read.numbers(s, "illuminance").size());
+            // Light scenes' sets carry the points as the result's do (older results had none).
+            if (s.contains("normal")) r.normal = read.vec3(s, "normal");
+            if (s.contains("points") && s["points"].is_array()) {
+                for (const Json& point : s["points"]) {
+                    const bool xyz = point.is_array() && point.size() == 3 &&
+                                     std::all_of(point.begin(), point.end(),
+                                                 [](const Json& v) { return v.is_number(); });
+                    r.points.push_back(xyz ? Vec3{point[0].get<double>(), point[1].get<double>(),
+                                                  point[2].get<double>()}
+                                           : Vec3{});
+                }
+            }
             if (s.contains("kind") && s["kind"].is_string()) r.kind = kind_named(s["kind"]);
             if (s.contains("surrounding_of") && s["surrounding_of"].is_string())
                 r.surrounding_of = s["surrounding_of"].get<std::string>();

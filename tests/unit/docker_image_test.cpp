@@ -112,16 +112,25 @@ TEST(DockerImage, ItsStepsAreTheRepositorysScripts) {
     EXPECT_NE(readme.find("`scripts/build`"), std::string::npos);
 }
 
-/// The shared libraries `binaries` load, as ldd finds them.
+/// The shared libraries `binaries` name as NEEDED (objdump), where ldd finds them: apt brings
+/// what those need in turn (libpq5's Kerberos and TLS, for instance).
 std::set<std::string> linked_libraries(const std::vector<fs::path>& binaries) {
     std::set<std::string> libraries;
-    const std::regex library(R"((?:=>\s*)?(/\S+)\s+\(0x)");
+    const std::regex needed_entry(R"(^\s*NEEDED\s+(\S+))");
+    const std::regex found(R"(^\s*(\S+)\s+=>\s*(/\S+)\s+\(0x)");
     for (const fs::path& binary : binaries) {
+        const Shell objdump = shell(std::string("objdump -p ") + shell_quoted(binary));
+        EXPECT_EQ(objdump.status, 0) << objdump.out;
+        std::set<std::string> needed;
+        for (const std::string& line : lines(objdump.out)) {
+            std::smatch m;
+            if (std::regex_search(line, m, needed_entry)) needed.insert(m[1]);
+        }
         const Shell ldd = shell(std::string("ldd ") + shell_quoted(binary));
         EXPECT_EQ(ldd.status, 0) << ldd.out;
         for (const std::string& line : lines(ldd.out)) {
             std::smatch m;
-            if (std::regex_search(line, m, library)) libraries.insert(m[1]);  // not linux-vdso
+            if (std::regex_search(line, m, found) && needed.contains(m[1])) libraries.insert(m[2]);
         }
     }
     return libraries;

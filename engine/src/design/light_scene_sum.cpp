@@ -17,6 +17,8 @@ SensorResult summed_set(const SensorResult& shape, std::size_t s,
                         const std::vector<double>& dimming) {
     SensorResult r;
     r.name = shape.name;
+    r.points = shape.points;
+    r.normal = shape.normal;
     r.grid = shape.grid;
     r.kind = shape.kind;
     r.surrounding_of = shape.surrounding_of;
