@@ -110,5 +110,29 @@ TEST(MemoryBudget, RefinementThatWouldNotFitStopsWithTheBestAnswerSoFar) {
     }
 }
 
+// A cylindrical sensor point keeps every emitting piece (no one tangent plane cuts the light
+// tree): 10,000 such points under a luminous ceiling of 1,600 tiles hold 128 MB of source lists,
+// which the budget must count before the gather is made, not find out after.
+TEST(MemoryBudget, CylindricalPointsUnderManyEmittersAreCountedBeforeTheGather) {
+    Scene scene = office();
+    for (int i = 0; i < 40; ++i) {
+        for (int j = 0; j < 40; ++j) {
+            const double x = 2 + 0.1 * i, y = 1 + 0.1 * j;
+            scene.surfaces.push_back(testing::polygon_surface(
+                "tile-" + std::to_string(i) + "-" + std::to_string(j), "panel",
+                testing::ceiling_rect(x, x + 0.09, y, y + 0.09, 2.98)));
+        }
+    }
+    SensorSet faces =
+        testing::sensor_grid("faces", {0.5, 0.5, 1.2}, {7, 0, 0}, {0, 5, 0}, 100, 100);
+    faces.kind = SensorKind::cylindrical;
+    scene.sensors.push_back(faces);
+    SolveOptions options;
+    options.tolerance = 0.3;
+    options.max_memory_bytes = std::size_t{64} << 20;
+    const Result r = solve(scene, options);
+    EXPECT_EQ(outcome_of(r), Outcome::failed_for_memory) << to_string(r.status);
+}
+
 }  // namespace
 }  // namespace radiant

@@ -130,7 +130,7 @@ constexpr std::size_t kDisplayBytesPerElement =
 // summaries that snapshots and the result are made of (a snapshot is built while the one it
 // replaces is still shown; the result's mesh is a copy).
 std::size_t level_bytes(const ElementCount& count, std::size_t points, std::size_t components,
-                        double survival, int display_copies) {
+                        std::size_t source_lists, double survival, int display_copies) {
     const std::size_t build = count.elements * (sizeof(Triangle) + kEmbreeBuildBytesPerTriangle -
                                                 kEmbreeBytesPerTriangle);
     const std::size_t display =
@@ -141,7 +141,21 @@ std::size_t level_bytes(const ElementCount& count, std::size_t points, std::size
         points * (SensorGather::bytes_per_point() + 2 * kHeapBlockBytes + sizeof(GatheredPoint));
     return count.elements * (sizeof(MeshElement) + kEmbreeBytesPerTriangle) +
            count.sides * sizeof(ElementSide) + components * per_component +
-           PhotonField::wave_bytes(survival) + std::max(build, display);
+           PhotonField::wave_bytes(survival) + source_lists + std::max(build, display);
+}
+
+// A receiver without one tangent plane (cylindrical kinds) keeps every emitting piece of its
+// component, not the light tree's cut: the bytes of those lists, over every component.
+std::size_t source_list_bytes(const PreparedScene& scene) {
+    std::size_t points = 0;
+    for (const PreparedSensorSet& set : scene.sensors) {
+        if (set.kind == SensorKind::cylindrical || set.kind == SensorKind::semi_cylindrical)
+            points += set.points.size();
+    }
+    std::size_t emitting = 0;
+    for (const Piece& p : scene.pieces)
+        emitting += scene.materials[static_cast<std::size_t>(p.material)].emits() ? 1 : 0;
+    return points * emitting * sizeof(std::size_t);
 }
 
 // How likely a photon survives a bounce, on average over the surfaces' area.
@@ -346,11 +360,12 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     // Memory: each level is estimated from its element count before it is built; ray sets are
     // added only as far as they fit.
     const double survival = mean_survival(scene);
+    const std::size_t source_lists = source_list_bytes(scene);
     const int display_copies = (observer_ ? 2 : 1) + (options_.want_mesh ? 1 : 0);
     const std::size_t components = std::max<std::size_t>(1, scene.components.components.size());
     auto bytes_of = [&](const ElementCount& count) {
-        return level_bytes(count, sensor_points + eye_sizes.size(), components, survival,
-                           display_copies);
+        return level_bytes(count, sensor_points + eye_sizes.size(), components, source_lists,
+                           survival, display_copies);
     };
     double edge = kEdgeOfFreePath * input.mean_free_path_m;
     // A component is done once its own estimates meet the tolerance: every sum of components
