@@ -30,7 +30,7 @@ public:
     explicit Service(const fs::path& dir)
         : dir_(dir),
           store_(dir),
-          jobs_(store_, metrics_, kQueueOptions),
+          jobs_(store_, metrics_, queue_options()),
           ctx_{jobs_, store_, metrics_, SessionLimits{}.body_bytes,
                AccessPolicy{{}, {}, {"https://app.example.com"}}},
           router_(ctx_) {}
@@ -39,7 +39,15 @@ public:
     RouteResult route(const Request& request) { return router_.route(request); }
 
 private:
-    static constexpr JobQueueOptions kQueueOptions{1, 4, 0.05, std::size_t{256} << 20, 1};
+    static JobQueueOptions queue_options() {
+        JobQueueOptions options;
+        options.workers = 1;
+        options.queue_limit = 4;
+        options.job_seconds = 0.05;
+        options.job_memory_bytes = std::size_t{256} << 20;
+        options.solve_threads = 1;
+        return options;
+    }
     /// Empty when the service starts, removed when it ends (declared first: destroyed last).
     struct ScratchDirectory {
         explicit ScratchDirectory(const fs::path& path) : path(path) { fs::remove_all(path); }

@@ -120,8 +120,10 @@ std::variant<LightSceneResult, std::vector<Problem>> evaluate_light_scene(const 
     }
     std::vector<double> dimming(solved.groups.size(), 0.0);
     for (const auto& [name, value] : scene.dimming) {
+        // Named, not captured: clang 14 (the sanitizer builds) cannot capture a binding.
+        const std::string& group = name;
         const auto it = std::find_if(solved.groups.begin(), solved.groups.end(),
-                                     [&](const GroupContribution& g) { return g.name == name; });
+                                     [&](const GroupContribution& g) { return g.name == group; });
         const std::string pointer = "/dimming/" + escape_pointer_token(name);
         if (it == solved.groups.end()) {
             std::string known;
