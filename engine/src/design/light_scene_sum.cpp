@@ -15,13 +15,11 @@ namespace {
 SensorResult summed_set(const SensorResult& shape, std::size_t s,
                         const std::vector<GroupContribution>& groups,
                         const std::vector<double>& dimming) {
-    SensorResult r;
-    r.name = shape.name;
-    r.points = shape.points;
-    r.normal = shape.normal;
-    r.grid = shape.grid;
-    r.kind = shape.kind;
-    r.surrounding_of = shape.surrounding_of;
+    // The shape's description (name, points, grid, kind, band) as it is, like the observers';
+    // its values, initial values and compliance are the sum's own.
+    SensorResult r = shape;
+    r.initial.reset();
+    r.compliance.reset();
     const std::size_t n = shape.illuminance.size();
     r.illuminance.assign(n, 0.0);
     std::vector<double> initial;
