@@ -27,6 +27,14 @@ constexpr double kSnapshotSeconds = 0.5;
 /// Running jobs' progress reaches the store at most this often (it is also in memory at once);
 /// leases on a shared store are renewed as often.
 constexpr auto kProgressWritePeriod = std::chrono::seconds(1);
+/// On a shared store, a running job's snapshot reaches the store at most this often, for other
+/// replicas to stream: its mesh blob may be megabytes, written again only when its values
+/// changed (the engine repeats them while it links and gathers).
+constexpr auto kSnapshotStorePeriod = std::chrono::seconds(2);
+/// Snapshots of jobs that other replicas run, kept decoded for this process's event streams so
+/// that each new one costs only its changed part; more than this many are streamed at once
+/// only by a very busy replica, which then decodes more often.
+constexpr std::size_t kMaxRemoteSnapshots = 32;
 /// An idle worker on a shared store asks for a job this often: other processes' submissions do
 /// not wake it (a job submitted here does at once).
 constexpr auto kClaimPollPeriod = std::chrono::milliseconds(500);
@@ -116,6 +124,10 @@ struct JobQueue::LiveJob final : SolveObserver {
     std::uint64_t last_event_id = 0;
     std::shared_ptr<const JobSnapshot> snapshot;  ///< guarded by mutex
     std::uint64_t stored_sequence = 0;            ///< progress the store has; writer thread only
+    /// The snapshot the shared store has (radiosity_event_id, values_event_id), and when it was
+    /// written; writer thread only.
+    std::uint64_t stored_snapshot_event_id = 0, stored_values_event_id = 0;
+    std::chrono::steady_clock::time_point snapshot_stored_at;
 };
 
 JobQueue::JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options)
@@ -218,12 +230,53 @@ std::shared_ptr<const JobSnapshot> JobQueue::snapshot(const std::string& id) con
         }
         if (job) return job->latest();
     }
+    if (store_.shared()) {
+        const std::optional<JobRecord> job = store_.find(id, false);
+        if (job && job->status == JobStatus::running) return remote_snapshot(id);
+        const std::lock_guard lock(mutex_);
+        remote_snapshots_.erase(id);
+    }
     std::optional<StoredMesh> stored = store_.mesh(id);
     if (!stored) return nullptr;
     std::optional<CompactMesh> mesh = decode(stored->blob);
     if (!mesh) throw std::runtime_error("job store: the mesh of job " + id + " is damaged");
     if (const auto job = store_.find(id, false)) stored->info.progress = job->progress;
     return std::make_shared<const JobSnapshot>(id, std::move(stored->info), std::move(*mesh));
+}
+
+std::shared_ptr<const JobSnapshot> JobQueue::remote_snapshot(const std::string& id) const {
+    std::shared_ptr<const JobSnapshot> cached;
+    {
+        const std::lock_guard lock(mutex_);
+        const auto it = remote_snapshots_.find(id);
+        if (it != remote_snapshots_.end()) cached = it->second;
+    }
+    std::optional<StoredMesh> stored =
+        store_.running_snapshot(id, cached ? cached->info().values_event_id : 0);
+    if (!stored) return nullptr;
+    std::shared_ptr<const JobSnapshot> fresh;
+    if (cached && stored->blob.empty()) {  // the values this process has already
+        if (cached->info().radiosity_event_id == stored->info.radiosity_event_id) return cached;
+        fresh = std::make_shared<const JobSnapshot>(id, std::move(stored->info), cached->mesh());
+    } else {
+        std::optional<CompactMesh> mesh = decode(stored->blob);
+        if (!mesh) throw std::runtime_error("job store: the snapshot of job " + id + " is damaged");
+        fresh = std::make_shared<const JobSnapshot>(id, std::move(stored->info), std::move(*mesh));
+    }
+    const std::lock_guard lock(mutex_);
+    if (remote_snapshots_.size() >= kMaxRemoteSnapshots && !remote_snapshots_.contains(id)) {
+        remote_snapshots_.erase(remote_snapshots_.begin());
+    }
+    remote_snapshots_[id] = fresh;
+    return fresh;
+}
+
+std::optional<std::uint64_t> JobQueue::change_token(const std::string& id) const {
+    {
+        const std::lock_guard lock(mutex_);
+        if (live_.contains(id) || unstored_.contains(id)) return std::nullopt;
+    }
+    return store_.change_token(id);
 }
 
 RunningScene JobQueue::running_scene(const std::string& id) const {
@@ -317,9 +370,19 @@ void JobQueue::write_progress() {
     std::unique_lock lock(mutex_);
     while (!progress_wake_.wait_for(lock, kProgressWritePeriod, [this] { return stopping_; })) {
         std::vector<std::pair<std::string, JobProgress>> changed;
+        std::vector<std::pair<std::shared_ptr<LiveJob>, std::shared_ptr<const JobSnapshot>>>
+            snapshots;
+        const auto now = std::chrono::steady_clock::now();
         for (const auto& [id, job] : live_) {
             const std::lock_guard job_lock(job->mutex);
             if (job->record.status != JobStatus::running) continue;
+            // Other replicas stream the job from the store (a final snapshot goes with the
+            // result, in finish()).
+            if (store_.shared() && job->snapshot && !job->snapshot->info().final &&
+                job->snapshot->info().radiosity_event_id != job->stored_snapshot_event_id &&
+                now - job->snapshot_stored_at >= kSnapshotStorePeriod) {
+                snapshots.emplace_back(job, job->snapshot);
+            }
             if (job->record.progress.sequence == job->stored_sequence) continue;
             job->stored_sequence = job->record.progress.sequence;
             changed.emplace_back(id, job->record.progress);
@@ -327,6 +390,9 @@ void JobQueue::write_progress() {
         std::vector<JobRecord> unstored;
         for (const auto& [id, record] : unstored_) unstored.push_back(record);
         lock.unlock();  // the store has its own lock; submissions need not wait for the disk
+        // Snapshots before progress: a reader that has seen a progress event then finds the
+        // snapshots taken before it, and never skips one for its lower event id.
+        for (const auto& [job, snapshot] : snapshots) store_snapshot(*job, *snapshot, now);
         for (const auto& [id, progress] : changed) {
             try {
                 store_.save_progress(id, progress);
@@ -347,6 +413,21 @@ void JobQueue::write_progress() {
         if (store_.shared()) renew_leases();
         lock.lock();
         for (const std::string& id : stored) unstored_.erase(id);
+    }
+}
+
+void JobQueue::store_snapshot(LiveJob& job, const JobSnapshot& snapshot,
+                              std::chrono::steady_clock::time_point now) {
+    const SnapshotInfo& info = snapshot.info();
+    const bool with_values = info.values_event_id != job.stored_values_event_id;
+    try {
+        store_.save_snapshot(job.id, info,
+                             with_values ? std::optional(encode(snapshot.mesh())) : std::nullopt);
+        job.stored_snapshot_event_id = info.radiosity_event_id;
+        job.stored_values_event_id = info.values_event_id;
+        job.snapshot_stored_at = now;
+    } catch (const std::exception& e) {
+        spdlog::error("job {}: snapshot not stored: {}", job.id, e.what());
     }
 }
 

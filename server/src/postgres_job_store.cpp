@@ -1,5 +1,8 @@
 #include "radiant/server/postgres_job_store.h"
 
+#include "postgres_change_feed.h"
+#include "postgres_connection.h"
+
 #include <libpq-fe.h>
 #include <spdlog/spdlog.h>
 
@@ -54,6 +57,27 @@ constexpr const char* kMigrations[] = {
     " radiosity_event_id BIGINT NOT NULL,"
     " final BOOLEAN NOT NULL,"
     " mesh BYTEA NOT NULL);",
+    // 2: a running job's latest snapshot, which its replica writes so that the others can
+    // stream it; and a NOTIFY on `radiant_jobs` with the job's id whenever a job's state or
+    // progress, or its snapshot, changes (postgres_change_feed.h). Lease renewals do not notify:
+    // they change nothing a reader shows.
+    "CREATE TABLE snapshots ("
+    " job_id TEXT PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,"
+    " version BIGINT NOT NULL,"
+    " mesh_version BIGINT NOT NULL,"
+    " mesh_event_id BIGINT NOT NULL,"
+    " radiosity_event_id BIGINT NOT NULL,"
+    " values_event_id BIGINT NOT NULL,"
+    " progress TEXT NOT NULL,"
+    " mesh BYTEA NOT NULL);"
+    "CREATE FUNCTION radiant_job_changed() RETURNS trigger LANGUAGE plpgsql AS"
+    " $$BEGIN PERFORM pg_notify('radiant_jobs', NEW.id); RETURN NULL; END$$;"
+    "CREATE TRIGGER jobs_changed AFTER UPDATE OF status, progress, error, warnings ON jobs"
+    " FOR EACH ROW EXECUTE FUNCTION radiant_job_changed();"
+    "CREATE FUNCTION radiant_snapshot_changed() RETURNS trigger LANGUAGE plpgsql AS"
+    " $$BEGIN PERFORM pg_notify('radiant_jobs', NEW.job_id); RETURN NULL; END$$;"
+    "CREATE TRIGGER snapshots_changed AFTER INSERT OR UPDATE ON snapshots FOR EACH ROW"
+    " EXECUTE FUNCTION radiant_snapshot_changed();",
 };
 static_assert(std::size(kMigrations) == PostgresJobStore::kSchemaVersion);
 
@@ -144,20 +168,8 @@ PostgresJobStore::~PostgresJobStore() { PQfinish(conn_); }
 void PostgresJobStore::connect() const {
     if (conn_ && PQstatus(conn_) == CONNECTION_OK) return;
     PQfinish(conn_);
-    // connect_timeout: a replica whose database is unreachable says so within seconds instead
-    // of hanging its start or a request. statement_timeout: a statement stuck behind a lock must
-    // not hold the store's mutex, and the requests waiting on it, for ever.
-    const char* keys[] = {"dbname", "connect_timeout", "options", "application_name", nullptr};
-    const char* values[] = {uri_.c_str(), "5",
-                            "-c statement_timeout=10000 -c client_min_messages=warning", "radiantd",
-                            nullptr};
-    conn_ = PQconnectdbParams(keys, values, 1);
-    if (PQstatus(conn_) != CONNECTION_OK) {
-        const std::string why = conn_ ? PQerrorMessage(conn_) : "out of memory";
-        PQfinish(conn_);
-        conn_ = nullptr;
-        throw StoreError("job store: cannot connect to PostgreSQL: " + why, true);
-    }
+    conn_ = nullptr;
+    conn_ = connect_postgres(uri_);
 }
 
 PostgresJobStore::Result PostgresJobStore::run(
@@ -323,6 +335,7 @@ void PostgresJobStore::finish(const std::string& id, JobStatus status, UnixMilli
             " lease_owner = '', lease_expires = 0 WHERE id = $5",
             {std::string(to_string(status)), std::to_string(finished),
              progress_to_json(progress).dump(), error, id});
+        run("DELETE FROM snapshots WHERE job_id = $1", {id});
         if (result_json) {
             run("INSERT INTO results (job_id, result) VALUES ($1, $2)"
                 " ON CONFLICT (job_id) DO UPDATE SET result = EXCLUDED.result",
@@ -366,6 +379,73 @@ std::optional<StoredMesh> PostgresJobStore::mesh(const std::string& id) const {
     mesh.info.final = r.boolean(0, 4);
     mesh.blob = r.bytes(0, 5);
     return mesh;
+}
+
+void PostgresJobStore::save_snapshot(const std::string& id, const SnapshotInfo& info,
+                                     const std::optional<std::string>& blob) {
+    const std::lock_guard lock(mutex_);
+    transaction([&] {
+        // The job's row stays locked until the snapshot is in: a finish() that comes meanwhile
+        // waits, then deletes it, and no snapshot outlives its job's run.
+        if (run("SELECT 1 FROM jobs WHERE id = $1 AND status = 'running' FOR UPDATE", {id})
+                .rows() == 0) {
+            return;
+        }
+        std::vector<std::optional<std::string>> params = {id,
+                                                          std::to_string(info.version),
+                                                          std::to_string(info.mesh_version),
+                                                          std::to_string(info.mesh_event_id),
+                                                          std::to_string(info.radiosity_event_id),
+                                                          std::to_string(info.values_event_id),
+                                                          progress_to_json(info.progress).dump()};
+        if (!blob) {
+            // Only a row whose values are these already is updated.
+            run("UPDATE snapshots SET version = $2, mesh_version = $3, mesh_event_id = $4,"
+                " radiosity_event_id = $5, progress = $7 WHERE job_id = $1"
+                " AND values_event_id = $6",
+                params);
+            return;
+        }
+        params.push_back(*blob);
+        run("INSERT INTO snapshots (job_id, version, mesh_version, mesh_event_id,"
+            " radiosity_event_id, values_event_id, progress, mesh)"
+            " VALUES ($1, $2, $3, $4, $5, $6, $7, $8) ON CONFLICT (job_id) DO UPDATE SET"
+            " version = EXCLUDED.version, mesh_version = EXCLUDED.mesh_version,"
+            " mesh_event_id = EXCLUDED.mesh_event_id,"
+            " radiosity_event_id = EXCLUDED.radiosity_event_id,"
+            " values_event_id = EXCLUDED.values_event_id, progress = EXCLUDED.progress,"
+            " mesh = EXCLUDED.mesh",
+            params, {false, false, false, false, false, false, false, true});
+    });
+}
+
+std::optional<StoredMesh> PostgresJobStore::running_snapshot(
+    const std::string& id, std::uint64_t have_values_event_id) const {
+    const std::lock_guard lock(mutex_);
+    const Result r =
+        run("SELECT s.version, s.mesh_version, s.mesh_event_id, s.radiosity_event_id,"
+            " s.values_event_id, s.progress, CASE WHEN s.values_event_id = $2 THEN ''::bytea"
+            " ELSE s.mesh END FROM snapshots s JOIN jobs j ON j.id = s.job_id"
+            " WHERE s.job_id = $1 AND j.status = 'running'",
+            {id, std::to_string(have_values_event_id)});
+    if (r.rows() == 0) return std::nullopt;
+    StoredMesh snapshot;
+    snapshot.info.version = static_cast<std::uint64_t>(r.integer(0, 0));
+    snapshot.info.mesh_version = static_cast<std::uint64_t>(r.integer(0, 1));
+    snapshot.info.mesh_event_id = static_cast<std::uint64_t>(r.integer(0, 2));
+    snapshot.info.radiosity_event_id = static_cast<std::uint64_t>(r.integer(0, 3));
+    snapshot.info.values_event_id = static_cast<std::uint64_t>(r.integer(0, 4));
+    snapshot.info.progress =
+        progress_from_json(nlohmann::json::parse(r.text(0, 5), nullptr, false));
+    snapshot.blob = r.bytes(0, 6);
+    return snapshot;
+}
+
+std::optional<std::uint64_t> PostgresJobStore::change_token(const std::string& id) const {
+    // Started by the first reader: a replica that never streams another's job needs no second
+    // connection (nor do tools and tests that use the store directly).
+    std::call_once(feed_once_, [this] { feed_ = std::make_unique<PostgresChangeFeed>(uri_); });
+    return feed_->token(id);
 }
 
 void PostgresJobStore::end_dead_jobs(const std::string& dead, int max_attempts,

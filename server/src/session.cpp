@@ -201,10 +201,17 @@ void Session::start_events(Response header, const EventStreamStart& start) {
 
 void Session::poll_events() {
     JobQueue& jobs = router_.context().jobs;
-    const std::optional<JobRecord> job = jobs.find(event_job_);
-    if (!job) return close();
-    const std::shared_ptr<const JobSnapshot> snapshot = jobs.snapshot(event_job_);
-    std::string text = events_->next(*job, snapshot.get());
+    // A job another replica runs is read from the store only when the store says it changed:
+    // asked before reading, so that a change made meanwhile is read at the next poll.
+    const std::optional<std::uint64_t> token = jobs.change_token(event_job_);
+    std::string text;
+    if (!token || token != event_token_) {
+        const std::optional<JobRecord> job = jobs.find(event_job_);
+        if (!job) return close();
+        const std::shared_ptr<const JobSnapshot> snapshot = jobs.snapshot(event_job_);
+        text = events_->next(*job, snapshot.get());
+        event_token_ = token;
+    }
     const auto now = std::chrono::steady_clock::now();
     if (text.empty() && now - last_event_write_ >= limits_.keep_alive) text = kKeepAliveComment;
     if (text.empty()) {

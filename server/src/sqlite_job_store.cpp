@@ -268,6 +268,18 @@ void SqliteJobStore::initialise(const JobStoreOptions& options) {
         " radiosity_event_id INTEGER NOT NULL,"
         " final INTEGER NOT NULL,"
         " mesh BLOB NOT NULL)");
+    // A running job's latest snapshot (save_snapshot), as the PostgreSQL store keeps it for
+    // other replicas; deleted when the job finishes.
+    exec(
+        "CREATE TABLE IF NOT EXISTS snapshots ("
+        " job_id TEXT PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,"
+        " version INTEGER NOT NULL,"
+        " mesh_version INTEGER NOT NULL,"
+        " mesh_event_id INTEGER NOT NULL,"
+        " radiosity_event_id INTEGER NOT NULL,"
+        " values_event_id INTEGER NOT NULL,"
+        " progress TEXT NOT NULL,"
+        " mesh BLOB NOT NULL)");
 }
 
 SqliteJobStore::~SqliteJobStore() {
@@ -480,6 +492,9 @@ void SqliteJobStore::finish_locked(const std::string& id, JobStatus status, Unix
             .bind(4, error)
             .bind(5, id);
         s.step();
+        Statement running(db_, "DELETE FROM snapshots WHERE job_id = ?");
+        running.bind(1, id);
+        running.step();
         if (result_json) {
             Statement r(db_, "INSERT OR REPLACE INTO results (job_id, result) VALUES (?, ?)");
             r.bind(1, id).bind(2, *result_json);
@@ -526,6 +541,58 @@ std::optional<StoredMesh> SqliteJobStore::mesh(const std::string& id) const {
     mesh.info.final = s.integer(4) != 0;
     mesh.blob = s.blob(5);
     return mesh;
+}
+
+void SqliteJobStore::save_snapshot(const std::string& id, const SnapshotInfo& info,
+                                   const std::optional<std::string>& blob) {
+    const std::lock_guard lock(mutex_);
+    write(
+        [&] {
+            transaction([&] {
+                Statement running(db_, "SELECT 1 FROM jobs WHERE id = ? AND status = 'running'");
+                running.bind(1, id);
+                if (!running.step()) return;
+                // Without a blob, only a row whose values are these already is updated.
+                Statement s(db_, blob ? "INSERT OR REPLACE INTO snapshots (version, mesh_version,"
+                                        " mesh_event_id, radiosity_event_id, progress,"
+                                        " values_event_id, job_id, mesh)"
+                                        " VALUES (?, ?, ?, ?, ?, ?, ?, ?)"
+                                      : "UPDATE snapshots SET version = ?, mesh_version = ?,"
+                                        " mesh_event_id = ?, radiosity_event_id = ?,"
+                                        " progress = ? WHERE values_event_id = ? AND job_id = ?");
+                s.bind(1, static_cast<std::int64_t>(info.version))
+                    .bind(2, static_cast<std::int64_t>(info.mesh_version))
+                    .bind(3, static_cast<std::int64_t>(info.mesh_event_id))
+                    .bind(4, static_cast<std::int64_t>(info.radiosity_event_id))
+                    .bind(5, progress_to_json(info.progress).dump())
+                    .bind(6, static_cast<std::int64_t>(info.values_event_id))
+                    .bind(7, id);
+                if (blob) s.bind_blob(8, *blob);
+                s.step();
+            });
+        },
+        blob.has_value());
+}
+
+std::optional<StoredMesh> SqliteJobStore::running_snapshot(
+    const std::string& id, std::uint64_t have_values_event_id) const {
+    const std::lock_guard lock(mutex_);
+    Statement s(db_,
+                "SELECT s.version, s.mesh_version, s.mesh_event_id, s.radiosity_event_id,"
+                " s.values_event_id, s.progress, CASE WHEN s.values_event_id = ? THEN NULL"
+                " ELSE s.mesh END FROM snapshots s JOIN jobs j ON j.id = s.job_id"
+                " WHERE s.job_id = ? AND j.status = 'running'");
+    s.bind(1, static_cast<std::int64_t>(have_values_event_id)).bind(2, id);
+    if (!s.step()) return std::nullopt;
+    StoredMesh snapshot;
+    snapshot.info.version = static_cast<std::uint64_t>(s.integer(0));
+    snapshot.info.mesh_version = static_cast<std::uint64_t>(s.integer(1));
+    snapshot.info.mesh_event_id = static_cast<std::uint64_t>(s.integer(2));
+    snapshot.info.radiosity_event_id = static_cast<std::uint64_t>(s.integer(3));
+    snapshot.info.values_event_id = static_cast<std::uint64_t>(s.integer(4));
+    snapshot.info.progress = progress_from_json(nlohmann::json::parse(s.text(5), nullptr, false));
+    snapshot.blob = s.blob(6);
+    return snapshot;
 }
 
 std::vector<std::string> SqliteJobStore::ids(const std::string& where) const {

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
 #include <thread>
@@ -269,6 +270,97 @@ TEST_P(JobStoreContract, AJobWhoseLeaseExpiredRunsAgainAfterARestart) {
     const UnfinishedJobs unfinished = store().requeue_unfinished(kMaxAttempts);
     EXPECT_EQ(unfinished.requeued, std::vector<std::string>{j.id});
     EXPECT_EQ(store().find(j.id, false)->status, JobStatus::queued);
+}
+
+TEST_P(JobStoreContract, ARunningJobsSnapshotIsReadByOtherReplicasUntilItFinishes) {
+    const JobRecord j = inserted();
+    SnapshotInfo info;
+    info.version = 1;
+    info.mesh_version = 1;
+    info.mesh_event_id = 3;
+    info.radiosity_event_id = 4;
+    info.values_event_id = 4;
+    info.progress.sequence = 2;
+    info.progress.stage = "shooting";
+    const std::string blob("\0mesh\xff one\0", 11);
+    store().save_snapshot(j.id, info, blob);
+    EXPECT_FALSE(store().running_snapshot(j.id, 0)) << "a queued job has no running snapshot";
+    ASSERT_TRUE(store().claim("a", 60s, kMaxAttempts));
+    store().save_snapshot(j.id, info, blob);
+
+    JobStore& other = replica();
+    auto read = other.running_snapshot(j.id, 0);
+    ASSERT_TRUE(read);
+    EXPECT_EQ(read->blob, blob);
+    EXPECT_EQ(read->info.mesh_event_id, 3u);
+    EXPECT_EQ(read->info.radiosity_event_id, 4u);
+    EXPECT_EQ(read->info.values_event_id, 4u);
+    EXPECT_EQ(read->info.progress.stage, "shooting");
+    EXPECT_EQ(other.running_snapshot(j.id, 4)->blob, "") << "a reader that has the values";
+
+    // The engine repeats its values under a newer event id: only the info is written.
+    info.version = 2;
+    info.radiosity_event_id = 6;
+    info.progress.sequence = 5;
+    store().save_snapshot(j.id, info, std::nullopt);
+    read = other.running_snapshot(j.id, 4);
+    EXPECT_EQ(read->info.radiosity_event_id, 6u);
+    EXPECT_EQ(read->info.version, 2u);
+    EXPECT_EQ(read->blob, "");
+    EXPECT_EQ(other.running_snapshot(j.id, 0)->blob, blob);
+
+    // New values with their mesh replace the row.
+    info.values_event_id = 8;
+    info.radiosity_event_id = 8;
+    store().save_snapshot(j.id, info, std::string("two"));
+    EXPECT_EQ(other.running_snapshot(j.id, 4)->blob, "two");
+
+    store().finish(j.id, JobStatus::done, now_millis(), info.progress, "", std::nullopt);
+    EXPECT_FALSE(other.running_snapshot(j.id, 0)) << "finish() ends the running snapshot";
+    store().save_snapshot(j.id, info, blob);
+    EXPECT_FALSE(other.running_snapshot(j.id, 0)) << "a late write after the finish";
+    EXPECT_FALSE(store().mesh(j.id)) << "the running snapshot is no final mesh";
+}
+
+TEST_P(JobStoreContract, TheChangeTokenMovesWhenAnotherReplicaChangesTheJob) {
+    const JobRecord j = inserted();
+    JobStore& reader = replica();
+    if (!postgresql()) {
+        EXPECT_FALSE(reader.change_token(j.id)) << "SQLite has one process: nothing to wake";
+        return;
+    }
+    // The feed starts listening with the first call; wait until it does.
+    std::optional<std::uint64_t> before;
+    const auto deadline = std::chrono::steady_clock::now() + 10s;
+    while (!(before = reader.change_token(j.id)) && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(10ms);
+    }
+    ASSERT_TRUE(before) << "the change feed never listened";
+    const auto changed = [&] {
+        const auto until = std::chrono::steady_clock::now() + 5s;
+        while (reader.change_token(j.id) == before && std::chrono::steady_clock::now() < until) {
+            std::this_thread::sleep_for(5ms);
+        }
+        const bool moved = reader.change_token(j.id) != before;
+        before = reader.change_token(j.id);
+        return moved;
+    };
+    ASSERT_TRUE(store().claim("a", 60s, kMaxAttempts));
+    EXPECT_TRUE(changed()) << "claim";
+    JobProgress progress;
+    progress.sequence = 7;
+    store().save_progress(j.id, progress);
+    EXPECT_TRUE(changed()) << "progress";
+    // A heartbeat changes nothing a reader shows, and wakes nobody.
+    store().renew_lease(j.id, "a", 60s);
+    std::this_thread::sleep_for(200ms);
+    EXPECT_EQ(reader.change_token(j.id), before) << "lease renewal";
+    SnapshotInfo info;
+    info.values_event_id = info.radiosity_event_id = 8;
+    store().save_snapshot(j.id, info, std::string("mesh"));
+    EXPECT_TRUE(changed()) << "snapshot";
+    store().finish(j.id, JobStatus::done, now_millis(), progress, "", std::nullopt);
+    EXPECT_TRUE(changed()) << "finish";
 }
 
 INSTANTIATE_TEST_SUITE_P(Stores, JobStoreContract, ::testing::Values("sqlite", "postgresql"),

@@ -1,10 +1,11 @@
 // What only the PostgreSQL job store does (job_store_test.cpp holds what every store does): its
-// schema versioned and migrated once however many replicas start, and clear errors when the
-// server is unreachable or newer.
+// schema versioned and migrated once however many replicas start (and from older versions), and
+// clear errors when the server is unreachable or newer.
 #include "radiant/server/postgres_job_store.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <thread>
@@ -47,6 +48,27 @@ TEST_F(PostgresJobStoreTest, ASchemaNewerThanThisBuildIsRefused) {
         EXPECT_NE(what.find("version 99"), std::string::npos) << what;
         EXPECT_NE(what.find("upgrade radiantd"), std::string::npos) << what;
     }
+}
+
+TEST_F(PostgresJobStoreTest, AVersionOneDatabaseGainsRunningSnapshotsOnStart) {
+    { PostgresJobStore first(uri()); }
+    // The database as radiantd with schema 1 left it: no snapshots, no change notifications.
+    shared_postgres().execute(database_,
+                              "DROP TABLE snapshots; DROP FUNCTION radiant_job_changed CASCADE;"
+                              " DROP FUNCTION radiant_snapshot_changed; UPDATE radiant_schema"
+                              " SET version = 1");
+    PostgresJobStore store(uri());
+    EXPECT_EQ(store.schema_version(), 2);
+    JobRecord job;
+    job.id = new_job_id();
+    job.scene_json = "{}";
+    job.created = now_millis();
+    store.insert(job);
+    ASSERT_TRUE(store.claim("a", std::chrono::seconds(60), 2));
+    SnapshotInfo info;
+    info.values_event_id = info.radiosity_event_id = 1;
+    store.save_snapshot(job.id, info, std::string("mesh"));
+    EXPECT_EQ(store.running_snapshot(job.id, 0)->blob, "mesh");
 }
 
 TEST_F(PostgresJobStoreTest, AnUnreachableServerIsAnUnwritableStoreWithTheReason) {

@@ -1,12 +1,14 @@
 // Three radiantd replicas on one PostgreSQL store, end to end (issue 31): jobs submitted to any
 // replica at random all end done exactly once, with the same result as any other solve of the
-// scene, although the replica running a job is killed (SIGKILL) twice.
+// scene, although the replica running a job is killed (SIGKILL) twice; and a job's event stream
+// is followed, and resumed, on replicas other than the one solving it.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <random>
 #include <string>
@@ -19,6 +21,7 @@
 #include "daemon_fixture.h"
 #include "postgres_server.h"
 #include "service_scenes.h"
+#include "sse.h"
 
 namespace {
 
@@ -27,7 +30,9 @@ using nlohmann::json;
 using namespace std::chrono_literals;
 using radiant::test::Daemon;
 using radiant::test::http_call;
+using radiant::test::parse_sse;
 using radiant::test::shared_postgres;
+using radiant::test::SseEvent;
 
 class ReplicasTest : public radiant::test::DaemonFixture {
 protected:
@@ -35,7 +40,7 @@ protected:
         const std::string missing = radiant::test::postgres_missing();
         if (!missing.empty()) GTEST_SKIP() << missing;
         DaemonFixture::SetUp();
-        database_ = "replicas_" + std::to_string(getpid());
+        database_ = "replicas_" + std::to_string(getpid()) + "_" + std::to_string(++count_);
         shared_postgres().create_database(database_);
     }
 
@@ -53,6 +58,9 @@ protected:
     }
 
     std::string database_;
+
+private:
+    static inline int count_ = 0;
 };
 
 /// Solves in about a tenth of a second, always to the same answer (no time limit), so that
@@ -119,6 +127,64 @@ TEST_F(ReplicasTest, ThirtyJobsEndDoneOnceThoughTheReplicaRunningOneIsKilledTwic
         EXPECT_EQ(query("SELECT attempts FROM jobs WHERE id = '" + id + "'")[0], "2") << id;
     }
     EXPECT_EQ(query("SELECT COUNT(*) FROM jobs WHERE attempts <> 1")[0], "2");
+}
+
+TEST_F(ReplicasTest, AStreamOnOneReplicaFollowsAJobSolvedByAnotherAndResumesOnAThird) {
+    // Only b runs when the job is submitted, so b solves it; a and c start once it runs.
+    const std::unique_ptr<Daemon> b = start("b");
+    const std::string id = post(*b, radiant::test::slow_room(5));
+    ASSERT_EQ(wait_for(*b, id, "running")["status"], "running");
+    ASSERT_EQ(query("SELECT lease_owner FROM jobs WHERE id = '" + id + "'")[0], "b");
+    const std::unique_ptr<Daemon> a = start("a");
+    const std::unique_ptr<Daemon> c = start("c");
+
+    const auto stream = http_call(a->port(), verb::get, "/v1/jobs/" + id + "/events");
+    ASSERT_EQ(stream.status, 200u);
+    const std::vector<SseEvent> events = parse_sse(stream.body);
+    ASSERT_GE(events.size(), 4u) << stream.body.substr(0, 2000);
+    for (std::size_t i = 1; i < events.size(); ++i) {
+        EXPECT_LT(events[i - 1].id, events[i].id) << "event " << i << " out of order";
+    }
+    const SseEvent& done = events.back();
+    ASSERT_EQ(done.name, "done");
+    EXPECT_EQ(json::parse(done.data)["status"], "done");
+    // b's progress and its snapshots, through the store: a mesh before the first radiosity
+    // event, radiosity while it ran, and the final one.
+    std::size_t progress = 0, running_radiosity = 0;
+    std::uint64_t mesh_version = 0, first_running_id = 0, final_id = 0;
+    for (const SseEvent& e : events) {
+        if (e.name == "progress") ++progress;
+        if (e.name == "mesh") mesh_version = json::parse(e.data)["mesh_version"];
+        if (e.name != "radiosity") continue;
+        const json data = json::parse(e.data);
+        EXPECT_EQ(data["mesh_version"], mesh_version) << "a radiosity event before its mesh";
+        if (data["final"] == true) {
+            final_id = e.id;
+        } else if (running_radiosity++ == 0) {
+            first_running_id = e.id;
+        }
+    }
+    EXPECT_GE(progress, 2u);
+    ASSERT_GE(running_radiosity, 1u) << "no snapshot of the running solve reached replica a";
+    ASSERT_GT(final_id, 0u) << "no final radiosity event";
+
+    // A client that saw events up to the first running snapshot resumes on c: it gets only what
+    // came after, ending with the same final snapshot and the same `done`.
+    const auto resumed = http_call(c->port(), verb::get, "/v1/jobs/" + id + "/events", "",
+                                   {{"Last-Event-ID", std::to_string(first_running_id)}});
+    ASSERT_EQ(resumed.status, 200u);
+    const std::vector<SseEvent> missed = parse_sse(resumed.body);
+    ASSERT_FALSE(missed.empty());
+    for (const SseEvent& e : missed) EXPECT_GT(e.id, first_running_id) << e.name;
+    EXPECT_EQ(missed.back().name, "done");
+    EXPECT_EQ(missed.back().id, done.id);
+    EXPECT_EQ(missed.back().data, done.data);
+    const auto final_event = std::find_if(missed.begin(), missed.end(), [](const SseEvent& e) {
+        return e.name == "radiosity" && json::parse(e.data)["final"] == true;
+    });
+    ASSERT_NE(final_event, missed.end());
+    EXPECT_EQ(final_event->id, final_id);
+    EXPECT_EQ(query("SELECT attempts FROM jobs WHERE id = '" + id + "'")[0], "1");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <mutex>
@@ -73,9 +74,14 @@ public:
 
     /// The job without its scene text; live progress for queued and running jobs. Thread-safe.
     std::optional<JobRecord> find(const std::string& id) const;
-    /// The latest snapshot: a running job's newest, a finished job's final one from the store;
+    /// The latest snapshot: a running job's newest (on a shared store, of a job another process
+    /// runs: the one it stored last), a finished job's final one from the store;
     /// null when there is none (queued, or failed before the first mesh). Thread-safe.
     std::shared_ptr<const JobSnapshot> snapshot(const std::string& id) const;
+    /// A number that changes whenever job `id` may have changed on another replica, so that an
+    /// event stream reads it again only then; nothing when the stream must read it every time
+    /// (the job runs here, or the store cannot tell). Thread-safe.
+    std::optional<std::uint64_t> change_token(const std::string& id) const;
     /// Scene name and result digits of a running job (a finished one's are in its result).
     RunningScene running_scene(const std::string& id) const;
 
@@ -101,6 +107,12 @@ private:
     std::shared_ptr<LiveJob> next_job();
     /// Claims a job from the shared store, waiting for one; null once stopping.
     std::shared_ptr<LiveJob> claim_job();
+    /// The latest snapshot that another process stored of a job it runs; null when none.
+    std::shared_ptr<const JobSnapshot> remote_snapshot(const std::string& id) const;
+    /// Writes a running job's snapshot for other processes (its mesh only when its values are
+    /// new); the progress writer's thread.
+    void store_snapshot(LiveJob& job, const JobSnapshot& snapshot,
+                        std::chrono::steady_clock::time_point now);
     /// Renews the leases of this process's running jobs on a shared store; stops the solves whose
     /// lease went to another process, or whose cancel another process accepted.
     void renew_leases();
@@ -128,6 +140,8 @@ private:
     std::unordered_map<std::string, std::shared_ptr<LiveJob>> live_;  ///< queued or running
     /// Finished jobs whose final state the store refused (disk full); without their results.
     std::unordered_map<std::string, JobRecord> unstored_;
+    /// Guarded by mutex_: remote_snapshot()'s latest, by job id (at most kMaxRemoteSnapshots).
+    mutable std::unordered_map<std::string, std::shared_ptr<const JobSnapshot>> remote_snapshots_;
     std::vector<std::thread> workers_;  ///< solvers and the progress writer
     std::string replica_;               ///< owner name in the shared store's leases
 };

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -14,9 +15,11 @@
 
 namespace radiant::server {
 
-/// A finished job's final snapshot: its place in the event sequence and encode(CompactMesh).
+/// A stored snapshot: its place in the event sequence and encode(CompactMesh).
 struct StoredMesh {
-    SnapshotInfo info;  ///< progress is not stored here (the job's own progress is the same)
+    /// A finished job's progress is not stored here (the job's own is the same); a running
+    /// job's is.
+    SnapshotInfo info;
     std::string blob;
 };
 
@@ -93,7 +96,23 @@ public:
                         const std::optional<std::string>& result_json,
                         const std::optional<StoredMesh>& mesh = std::nullopt) = 0;
     virtual std::optional<std::string> result(const std::string& id) const = 0;
+    /// A finished job's final snapshot, as finish() stored it.
     virtual std::optional<StoredMesh> mesh(const std::string& id) const = 0;
+
+    /// A running job's latest snapshot (info.progress included), which the process running it
+    /// writes so that other processes can stream it. `blob` nothing: the stored blob has these
+    /// values already (same values_event_id), only the info changes. Does nothing unless the job
+    /// is running; finish() deletes it.
+    virtual void save_snapshot(const std::string& id, const SnapshotInfo& info,
+                               const std::optional<std::string>& blob) = 0;
+    /// What save_snapshot stored, if the job is still running; the blob is left empty when its
+    /// values_event_id is `have_values_event_id` (the reader has those values already).
+    virtual std::optional<StoredMesh> running_snapshot(
+        const std::string& id, std::uint64_t have_values_event_id) const = 0;
+    /// A number that changes whenever another process may have changed job `id` (its state,
+    /// progress or snapshot), so a reader need not read the job again until it does; nothing
+    /// when the store cannot tell (then read it every time).
+    virtual std::optional<std::uint64_t> change_token(const std::string& id) const = 0;
 
     /// Jobs that were queued or running when the last process stopped. Those with a cancel
     /// request end cancelled; those started `max_attempts` times end failed (each start killed

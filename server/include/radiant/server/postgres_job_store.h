@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -16,6 +17,8 @@ struct pg_conn;
 
 namespace radiant::server {
 
+class PostgresChangeFeed;
+
 /// Thread-safe: one connection guarded by a mutex, as SqliteJobStore (statements are short, and
 /// each replica runs few of them a second). Times (leases, started, finished) come from the
 /// database's clock, so replicas on machines whose clocks differ agree on when a lease ends.
@@ -23,7 +26,7 @@ namespace radiant::server {
 class PostgresJobStore final : public JobStore {
 public:
     /// The schema this build writes; older schemas are migrated on open.
-    static constexpr int kSchemaVersion = 1;
+    static constexpr int kSchemaVersion = 2;
 
     /// Connects to `uri` (postgresql://user@host/db or key=value pairs, as libpq takes them),
     /// then creates or migrates the schema, one replica at a time. Throws StoreError when the
@@ -46,6 +49,12 @@ public:
                 const std::optional<StoredMesh>& mesh = std::nullopt) override;
     std::optional<std::string> result(const std::string& id) const override;
     std::optional<StoredMesh> mesh(const std::string& id) const override;
+    void save_snapshot(const std::string& id, const SnapshotInfo& info,
+                       const std::optional<std::string>& blob) override;
+    std::optional<StoredMesh> running_snapshot(const std::string& id,
+                                               std::uint64_t have_values_event_id) const override;
+    /// From LISTEN/NOTIFY (PostgresChangeFeed), on a second connection opened by the first call.
+    std::optional<std::uint64_t> change_token(const std::string& id) const override;
     /// Other replicas may be running jobs: only jobs whose lease expired count as unfinished.
     UnfinishedJobs requeue_unfinished(int max_attempts) override;
     std::map<JobStatus, std::size_t> count_by_status() const override;
@@ -80,6 +89,8 @@ private:
     const std::string uri_;
     mutable pg_conn* conn_ = nullptr;
     mutable std::mutex mutex_;
+    mutable std::once_flag feed_once_;
+    mutable std::unique_ptr<PostgresChangeFeed> feed_;
 };
 
 }  // namespace radiant::server

@@ -67,6 +67,7 @@ private:
 
     std::optional<EventStream> events_;
     std::string event_job_;
+    std::optional<std::uint64_t> event_token_;  ///< JobQueue::change_token at the last read
     std::string event_text_;
     boost::asio::steady_timer timer_;
     std::chrono::steady_clock::time_point last_event_write_;

@@ -48,6 +48,14 @@ public:
                 const std::optional<StoredMesh>& mesh = std::nullopt) override;
     std::optional<std::string> result(const std::string& id) const override;
     std::optional<StoredMesh> mesh(const std::string& id) const override;
+    void save_snapshot(const std::string& id, const SnapshotInfo& info,
+                       const std::optional<std::string>& blob) override;
+    std::optional<StoredMesh> running_snapshot(const std::string& id,
+                                               std::uint64_t have_values_event_id) const override;
+    /// Nothing: one process writes this store, and it holds the jobs it runs in memory.
+    std::optional<std::uint64_t> change_token(const std::string&) const override {
+        return std::nullopt;
+    }
     /// The directory lock proves that no other process runs these jobs any more.
     UnfinishedJobs requeue_unfinished(int max_attempts) override;
     std::map<JobStatus, std::size_t> count_by_status() const override;
