@@ -98,9 +98,9 @@ std::optional<Response> check_access(const AccessPolicy& policy, const std::stri
         response.set(http::field::access_control_max_age, kPreflightMaxAgeSeconds);
         return response;
     }
-    if (policy.token.empty() || path_of(to_std(request.target())) == "/healthz") {
-        return std::nullopt;
-    }
+    // Probes (a load balancer's, Kubernetes') carry no token.
+    const std::string_view path = path_of(to_std(request.target()));
+    if (policy.token.empty() || path == "/healthz" || path == "/readyz") return std::nullopt;
     const std::string_view authorization = to_std(request[http::field::authorization]);
     constexpr std::string_view kBearer = "Bearer ";
     const bool bearer = authorization.size() > kBearer.size() &&

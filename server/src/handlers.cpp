@@ -280,6 +280,19 @@ Response healthz(ServiceContext& ctx, const Request& request) {
     return json_response(request, http::status::ok, {{"status", "ok"}});
 }
 
+Response readyz(ServiceContext& ctx, const Request& request) {
+    if (ctx.jobs.shutting_down()) {
+        return error_response(request, http::status::service_unavailable, "shutting_down",
+                              "the service is shutting down");
+    }
+    const StoreHealth store = ctx.store.health();
+    if (!store.writable) {
+        return error_response(request, http::status::service_unavailable, "store_unwritable",
+                              store.reason);
+    }
+    return json_response(request, http::status::ok, {{"status", "ready"}});
+}
+
 Response metrics(ServiceContext& ctx, const Request& request) {
     return text_response(request, http::status::ok,
                          ctx.metrics.render(ctx.store.count_by_status(), ctx.jobs.queue_length()),

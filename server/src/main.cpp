@@ -76,7 +76,7 @@ int serve(const ServerConfig& config) {
     }
     const std::unique_ptr<JobStore> owned_store = open_store(config);
     JobStore& store = *owned_store;
-    Metrics metrics;
+    Metrics metrics(config.replica);
     JobQueueOptions queue_options;
     queue_options.workers = config.workers;
     queue_options.queue_limit = config.queue_limit;
@@ -198,7 +198,7 @@ int main(int argc, char** argv) {
         ->envname("RADIANT_MAX_STORE_MB")
         ->check(CLI::PositiveNumber);
     app.add_option("--token-file", config.token_file,
-                   "file holding a bearer token required on every route but /healthz")
+                   "file holding a bearer token required on every route but /healthz and /readyz")
         ->envname("RADIANT_TOKEN_FILE");
     app.add_option("--allow-host", config.allowed_hosts,
                    "a Host name answered besides localhost and the listen address (repeatable; "

@@ -106,6 +106,10 @@ RouteResult Router::dispatch(const Request& request) {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
         return {handlers::healthz(ctx_, request), std::nullopt};
     }
+    if (parts.size() == 1 && parts[0] == "readyz") {
+        if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
+        return {handlers::readyz(ctx_, request), std::nullopt};
+    }
     if (parts.size() == 1 && parts[0] == "metrics") {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
         return {handlers::metrics(ctx_, request), std::nullopt};

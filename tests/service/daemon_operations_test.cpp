@@ -145,6 +145,9 @@ TEST_F(DaemonOperationsTest, AFullStoreFailsJobsVisiblyAndHealthSaysSo) {
     EXPECT_EQ(json::parse(health.body)["status"], "store_unwritable") << health.body;
     EXPECT_NE(json::parse(health.body).value("reason", "").find("full"), std::string::npos)
         << health.body;
+    const auto ready = http_call(d.port(), verb::get, "/readyz");
+    EXPECT_EQ(ready.status, 503u);
+    EXPECT_EQ(json::parse(ready.body)["error"]["code"], "store_unwritable") << ready.body;
 }
 
 TEST_F(DaemonOperationsTest, OutOfDescriptorsAcceptPausesAndRecovers) {

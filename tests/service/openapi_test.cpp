@@ -213,6 +213,7 @@ TEST(OpenApi, EveryAnswerMatchesTheSpec) {
                   .status,
               404u);
     EXPECT_EQ(rec.call(verb::get, "/healthz", "/healthz").status, 200u);
+    EXPECT_EQ(rec.call(verb::get, "/readyz", "/readyz").status, 200u);
     EXPECT_EQ(rec.call(verb::get, "/metrics", "/metrics").status, 200u);
     // The viewer (200 when the build made it, else 404) and a file that is not there.
     const unsigned viewer = rec.call(verb::get, "/", "/").status;

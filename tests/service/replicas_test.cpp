@@ -129,6 +129,30 @@ TEST_F(ReplicasTest, ThirtyJobsEndDoneOnceThoughTheReplicaRunningOneIsKilledTwic
     EXPECT_EQ(query("SELECT COUNT(*) FROM jobs WHERE attempts <> 1")[0], "2");
 }
 
+TEST_F(ReplicasTest, AReplicaIsReadyOnlyWhileItsDatabaseAnswers) {
+    const std::unique_ptr<Daemon> r = start("r");
+    EXPECT_EQ(http_call(r->port(), verb::get, "/readyz").status, 200u);
+    const auto metrics = http_call(r->port(), verb::get, "/metrics");
+    EXPECT_NE(metrics.body.find("radiant_queue_length{replica=\"r\"} 0"), std::string::npos)
+        << metrics.body;
+    // The database refuses this replica's connections, as when it is down or cut off.
+    shared_postgres().execute("postgres",
+                              "ALTER DATABASE " + database_ + " ALLOW_CONNECTIONS false");
+    shared_postgres().execute("postgres",
+                              "SELECT pg_terminate_backend(pid) FROM pg_stat_activity"
+                              " WHERE datname = '" +
+                                  database_ + "'");
+    const auto down = http_call(r->port(), verb::get, "/readyz");
+    EXPECT_EQ(down.status, 503u);
+    const json error = json::parse(down.body)["error"];
+    EXPECT_EQ(error["code"], "store_unwritable") << down.body;
+    EXPECT_NE(error["message"].get<std::string>().find("job store: "), std::string::npos)
+        << down.body;
+    shared_postgres().execute("postgres",
+                              "ALTER DATABASE " + database_ + " ALLOW_CONNECTIONS true");
+    EXPECT_EQ(http_call(r->port(), verb::get, "/readyz").status, 200u) << "ready again";
+}
+
 TEST_F(ReplicasTest, AStreamOnOneReplicaFollowsAJobSolvedByAnotherAndResumesOnAThird) {
     // Only b runs when the job is submitted, so b solves it; a and c start once it runs.
     const std::unique_ptr<Daemon> b = start("b");

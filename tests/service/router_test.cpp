@@ -372,6 +372,32 @@ TEST(Router, ShuttingDownIs503) {
     EXPECT_EQ(r.result(), http::status::service_unavailable);
     EXPECT_EQ(json::parse(r.body())["error"]["code"], "shutting_down");
     EXPECT_EQ(s.get("/healthz").result(), http::status::service_unavailable);
+    const Response ready = s.get("/readyz");
+    EXPECT_EQ(ready.result(), http::status::service_unavailable);
+    EXPECT_EQ(json::parse(ready.body())["error"]["code"], "shutting_down");
+}
+
+TEST(Router, ReadyWhileTheStoreTakesWrites) {
+    Service s;
+    const Response r = s.get("/readyz");
+    EXPECT_EQ(r.result(), http::status::ok);
+    EXPECT_EQ(json::parse(r.body())["status"], "ready");
+    EXPECT_EQ(s.call(http::verb::post, "/readyz").response.result(),
+              http::status::method_not_allowed);
+}
+
+TEST(Router, AReplicaNameLabelsEveryMetric) {
+    Metrics metrics("r\"1\\");
+    metrics.count_request(200);
+    const std::string text = metrics.render({{JobStatus::queued, 3}}, 2);
+    for (const char* line :
+         {"radiant_jobs{replica=\"r\\\"1\\\\\",state=\"queued\"} 3",
+          "radiant_queue_length{replica=\"r\\\"1\\\\\"} 2",
+          "radiant_solves_total{replica=\"r\\\"1\\\\\"} 0",
+          "radiant_http_requests_total{replica=\"r\\\"1\\\\\",status=\"200\"} 1"}) {
+        EXPECT_NE(text.find(line), std::string::npos) << line << "\n" << text;
+    }
+    EXPECT_EQ(Metrics().render({}, 0).find("replica="), std::string::npos);
 }
 
 TEST(Router, HealthAndMetrics) {
@@ -485,6 +511,7 @@ TEST(Router, TokenIsNeededOnEveryRouteButHealthz) {
         EXPECT_EQ(r[http::field::www_authenticate], "Bearer realm=\"radiantd\"");
     }
     EXPECT_EQ(s.get("/healthz").result(), http::status::ok);
+    EXPECT_EQ(s.get("/readyz").result(), http::status::ok) << "probes carry no token";
     Request wrong{http::verb::get, "/v1/jobs", 11};
     wrong.set(http::field::authorization, "Bearer s3cret-tokeN");
     EXPECT_EQ(s.send(wrong).result(), http::status::unauthorized);

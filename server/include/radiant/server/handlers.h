@@ -76,6 +76,9 @@ Response cancel_job(ServiceContext& ctx, const Request& request, const std::stri
 Response post_light_scene(ServiceContext& ctx, const Request& request, const std::string& id);
 Response list_jobs(ServiceContext& ctx, const Request& request, const Query& query);
 Response healthz(ServiceContext& ctx, const Request& request);
+/// Readiness for a load balancer: 200 while the store answers and takes writes, else 503 with
+/// an error (`shutting_down`, `store_unwritable` and the store's reason).
+Response readyz(ServiceContext& ctx, const Request& request);
 Response metrics(ServiceContext& ctx, const Request& request);
 Response not_found(const Request& request);
 

@@ -12,6 +12,10 @@ namespace radiant::server {
 
 class Metrics {
 public:
+    /// `replica` (radiantd --replica): when not empty, every series carries replica="<name>",
+    /// so that replicas on one store are told apart however they are scraped.
+    explicit Metrics(std::string replica = {});
+
     void count_request(unsigned status);
     /// Adds one finished solve's wall-clock seconds and rays.
     void count_solve(double seconds, std::uint64_t rays);
@@ -22,6 +26,10 @@ public:
                        std::size_t queue_length) const;
 
 private:
+    /// `{replica="…",name="value"}`, either part left out when empty; "" when both are.
+    std::string labels(const std::string& name = {}, const std::string& value = {}) const;
+
+    const std::string replica_;
     mutable std::mutex mutex_;
     std::map<unsigned, std::uint64_t> requests_by_status_;
     std::uint64_t solves_ = 0;
