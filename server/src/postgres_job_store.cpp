@@ -132,6 +132,15 @@ public:
         PQfreemem(raw);
         return out;
     }
+    /// version, mesh_version, mesh_event_id and radiosity_event_id from four columns of row 0.
+    SnapshotInfo snapshot_info(int first_col) const {
+        SnapshotInfo info;
+        info.version = static_cast<std::uint64_t>(integer(0, first_col));
+        info.mesh_version = static_cast<std::uint64_t>(integer(0, first_col + 1));
+        info.mesh_event_id = static_cast<std::uint64_t>(integer(0, first_col + 2));
+        info.radiosity_event_id = static_cast<std::uint64_t>(integer(0, first_col + 3));
+        return info;
+    }
     std::vector<std::string> column(int col) const {
         std::vector<std::string> values;
         for (int row = 0; row < rows(); ++row) values.push_back(text(row, col));
@@ -372,10 +381,7 @@ std::optional<StoredMesh> PostgresJobStore::mesh(const std::string& id) const {
             {id});
     if (r.rows() == 0) return std::nullopt;
     StoredMesh mesh;
-    mesh.info.version = static_cast<std::uint64_t>(r.integer(0, 0));
-    mesh.info.mesh_version = static_cast<std::uint64_t>(r.integer(0, 1));
-    mesh.info.mesh_event_id = static_cast<std::uint64_t>(r.integer(0, 2));
-    mesh.info.radiosity_event_id = static_cast<std::uint64_t>(r.integer(0, 3));
+    mesh.info = r.snapshot_info(0);
     mesh.info.final = r.boolean(0, 4);
     mesh.blob = r.bytes(0, 5);
     return mesh;
@@ -430,10 +436,7 @@ std::optional<StoredMesh> PostgresJobStore::running_snapshot(
             {id, std::to_string(have_values_event_id)});
     if (r.rows() == 0) return std::nullopt;
     StoredMesh snapshot;
-    snapshot.info.version = static_cast<std::uint64_t>(r.integer(0, 0));
-    snapshot.info.mesh_version = static_cast<std::uint64_t>(r.integer(0, 1));
-    snapshot.info.mesh_event_id = static_cast<std::uint64_t>(r.integer(0, 2));
-    snapshot.info.radiosity_event_id = static_cast<std::uint64_t>(r.integer(0, 3));
+    snapshot.info = r.snapshot_info(0);
     snapshot.info.values_event_id = static_cast<std::uint64_t>(r.integer(0, 4));
     snapshot.info.progress =
         progress_from_json(nlohmann::json::parse(r.text(0, 5), nullptr, false));

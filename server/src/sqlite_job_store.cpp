@@ -143,6 +143,15 @@ public:
                  : std::string();
     }
     std::int64_t integer(int col) const { return sqlite3_column_int64(stmt_, col); }
+    /// version, mesh_version, mesh_event_id and radiosity_event_id from four columns.
+    SnapshotInfo snapshot_info(int first_col) const {
+        SnapshotInfo info;
+        info.version = static_cast<std::uint64_t>(integer(first_col));
+        info.mesh_version = static_cast<std::uint64_t>(integer(first_col + 1));
+        info.mesh_event_id = static_cast<std::uint64_t>(integer(first_col + 2));
+        info.radiosity_event_id = static_cast<std::uint64_t>(integer(first_col + 3));
+        return info;
+    }
     std::string blob(int col) const {
         const void* p = sqlite3_column_blob(stmt_, col);
         return p ? std::string(static_cast<const char*>(p),
@@ -534,10 +543,7 @@ std::optional<StoredMesh> SqliteJobStore::mesh(const std::string& id) const {
     s.bind(1, id);
     if (!s.step()) return std::nullopt;
     StoredMesh mesh;
-    mesh.info.version = static_cast<std::uint64_t>(s.integer(0));
-    mesh.info.mesh_version = static_cast<std::uint64_t>(s.integer(1));
-    mesh.info.mesh_event_id = static_cast<std::uint64_t>(s.integer(2));
-    mesh.info.radiosity_event_id = static_cast<std::uint64_t>(s.integer(3));
+    mesh.info = s.snapshot_info(0);
     mesh.info.final = s.integer(4) != 0;
     mesh.blob = s.blob(5);
     return mesh;
@@ -585,10 +591,7 @@ std::optional<StoredMesh> SqliteJobStore::running_snapshot(
     s.bind(1, static_cast<std::int64_t>(have_values_event_id)).bind(2, id);
     if (!s.step()) return std::nullopt;
     StoredMesh snapshot;
-    snapshot.info.version = static_cast<std::uint64_t>(s.integer(0));
-    snapshot.info.mesh_version = static_cast<std::uint64_t>(s.integer(1));
-    snapshot.info.mesh_event_id = static_cast<std::uint64_t>(s.integer(2));
-    snapshot.info.radiosity_event_id = static_cast<std::uint64_t>(s.integer(3));
+    snapshot.info = s.snapshot_info(0);
     snapshot.info.values_event_id = static_cast<std::uint64_t>(s.integer(4));
     snapshot.info.progress = progress_from_json(nlohmann::json::parse(s.text(5), nullptr, false));
     snapshot.blob = s.blob(6);

@@ -274,12 +274,14 @@ TEST_P(JobStoreContract, AJobWhoseLeaseExpiredRunsAgainAfterARestart) {
 
 TEST_P(JobStoreContract, ARunningJobsSnapshotIsReadByOtherReplicasUntilItFinishes) {
     const JobRecord j = inserted();
-    SnapshotInfo info;
-    info.version = 1;
-    info.mesh_version = 1;
-    info.mesh_event_id = 3;
-    info.radiosity_event_id = 4;
-    info.values_event_id = 4;
+    SnapshotInfo info{.version = 1,
+                      .mesh_version = 1,
+                      .mesh_event_id = 3,
+                      .radiosity_event_id = 4,
+                      .values_event_id = 4,
+                      .final = false,
+                      .progress = {},
+                      .sensors = nullptr};
     info.progress.sequence = 2;
     info.progress.stage = "shooting";
     const std::string blob("\0mesh\xff one\0", 11);
