@@ -51,6 +51,7 @@ std::optional<std::uint64_t> PostgresChangeFeed::token(const std::string& id) co
 
 void PostgresChangeFeed::listen() {
     PGconn* conn = nullptr;
+    bool warned = false;  // one log line per outage, not one per retry
     const auto stopping = [this] {
         const std::lock_guard lock(mutex_);
         return stopping_;
@@ -65,8 +66,12 @@ void PostgresChangeFeed::listen() {
                 if (!ok) throw std::runtime_error(PQerrorMessage(conn));
                 ++epoch_;  // before listening_: a reader never sees the old epoch as current
                 listening_ = true;
+                warned = false;
             } catch (const std::exception& e) {
-                spdlog::warn("job change feed: {}; streams of other replicas' jobs poll", e.what());
+                if (!std::exchange(warned, true)) {
+                    spdlog::warn("job change feed: {}; streams of other replicas' jobs poll",
+                                 e.what());
+                }
                 PQfinish(conn);
                 conn = nullptr;
                 std::unique_lock lock(mutex_);

@@ -156,11 +156,21 @@ TEST_F(ReplicasTest, AReplicaIsReadyOnlyWhileItsDatabaseAnswers) {
 TEST_F(ReplicasTest, AStreamOnOneReplicaFollowsAJobSolvedByAnotherAndResumesOnAThird) {
     // Only b runs when the job is submitted, so b solves it; a and c start once it runs.
     const std::unique_ptr<Daemon> b = start("b");
-    const std::string id = post(*b, radiant::test::slow_room(5));
+    const std::string id = post(*b, radiant::test::slow_room(6));
     ASSERT_EQ(wait_for(*b, id, "running")["status"], "running");
     ASSERT_EQ(query("SELECT lease_owner FROM jobs WHERE id = '" + id + "'")[0], "b");
     const std::unique_ptr<Daemon> a = start("a");
     const std::unique_ptr<Daemon> c = start("c");
+    // While b solves, a's result of the job carries the mesh b stored last.
+    json running;
+    const auto deadline = std::chrono::steady_clock::now() + 4s;
+    do {
+        const auto r = http_call(a->port(), verb::get, "/v1/jobs/" + id + "/result?include=mesh");
+        running = r.status == 200u ? json::parse(r.body) : json();
+        if (!running.contains("mesh")) std::this_thread::sleep_for(50ms);
+    } while (!running.contains("mesh") && std::chrono::steady_clock::now() < deadline);
+    EXPECT_TRUE(running.contains("mesh")) << "no stored snapshot of the running solve";
+    EXPECT_EQ(job(*a, id)["status"], "running");
 
     const auto stream = http_call(a->port(), verb::get, "/v1/jobs/" + id + "/events");
     ASSERT_EQ(stream.status, 200u);
