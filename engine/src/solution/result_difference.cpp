@@ -37,6 +37,18 @@ DarkScales dark_scales(const Result& r) {
     return d;
 }
 
+// What a sensor value (or set) darker than it is measured against: a tenth of the mean of all
+// sensor points.
+double sensor_dark_scale(const Result& r) {
+    double sum = 0;
+    std::size_t count = 0;
+    for (const SensorResult& s : r.sensors) {
+        for (const double e : s.illuminance) sum += e;
+        count += s.illuminance.size();
+    }
+    return count > 0 ? kDarkShare * sum / static_cast<double>(count) : 0;
+}
+
 bool sensors_correspond(const Result& a, const Result& b) {
     if (a.sensors.empty() || a.sensors.size() != b.sensors.size()) return false;
     for (std::size_t k = 0; k < a.sensors.size(); ++k) {
@@ -47,13 +59,7 @@ bool sensors_correspond(const Result& a, const Result& b) {
 
 // Sensor sets: each set's RMS difference over its mean, the largest.
 double sensor_rms_difference(const Result& a, const Result& b) {
-    double sum = 0;
-    std::size_t count = 0;
-    for (const SensorResult& s : a.sensors) {
-        for (const double e : s.illuminance) sum += e;
-        count += s.illuminance.size();
-    }
-    const double dark = count > 0 ? kDarkShare * sum / static_cast<double>(count) : 0;
+    const double dark = sensor_dark_scale(a);
     double worst = 0;
     for (std::size_t k = 0; k < a.sensors.size(); ++k) {
         const std::vector<double>& x = a.sensors[k].illuminance;
@@ -110,13 +116,7 @@ double largest_relative_difference(const Result& a, const Result& b) {
         }
     }
     if (a.sensors.size() == b.sensors.size()) {
-        double sum = 0;
-        std::size_t count = 0;
-        for (const SensorResult& s : a.sensors) {
-            for (const double e : s.illuminance) sum += e;
-            count += s.illuminance.size();
-        }
-        const double dark = count > 0 ? kDarkShare * sum / static_cast<double>(count) : 0;
+        const double dark = sensor_dark_scale(a);
         for (std::size_t k = 0; k < a.sensors.size(); ++k) {
             const std::vector<double>& x = a.sensors[k].illuminance;
             const std::vector<double>& y = b.sensors[k].illuminance;
