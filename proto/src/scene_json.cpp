@@ -570,18 +570,12 @@ SensorSet SceneReader::sensor(const Json& j, const Ptr& p, std::size_t index) {
         s.workplane = workplane(j["workplane"], p / "workplane");
     }
     if (const Json* k = member(j, p, "kind", false)) {
-        static const std::pair<const char*, SensorKind> sensor_kinds[] = {
-            {"planar", SensorKind::planar},
-            {"vertical", SensorKind::vertical},
-            {"cylindrical", SensorKind::cylindrical},
-            {"semi-cylindrical", SensorKind::semi_cylindrical}};
-        const auto it = std::find_if(std::begin(sensor_kinds), std::end(sensor_kinds),
-                                     [&](const auto& x) { return *k == x.first; });
-        if (it == std::end(sensor_kinds)) {
+        const auto kind = k->is_string() ? sensor_kind_named(k->get<std::string>()) : std::nullopt;
+        if (!kind) {
             report(p / "kind",
                    "kind must be one of planar, vertical, cylindrical, semi-cylindrical");
         } else {
-            s.kind = it->second;
+            s.kind = *kind;
         }
     }
     if (const Json* r = member(j, p, "requirement", false)) {

@@ -3,10 +3,10 @@
 // contribution (its `groups`), and a light scene is their sum with the posted dimming. The
 // stored result is parsed once per job (StoredSolutions).
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "radiant/lighting.h"
 #include "radiant/proto/lighting_json.h"
+#include "radiant/proto/result_reader.h"
 #include "radiant/server/handlers.h"
 
 namespace radiant::server::handlers {
@@ -37,15 +37,16 @@ Response post_light_scene(ServiceContext& ctx, const Request& request, const std
                 request, http::status::not_found, "no_result",
                 "job " + id + " was " + to_string(job->status) + " before it produced a result");
         }
-        const auto doc = nlohmann::json::parse(*stored, nullptr, false);
-        std::string error;
-        auto read = std::make_shared<Result>(proto::lighting_solution_from_json(doc, error));
-        if (!error.empty()) {
+        proto::ResultReadOutcome read = proto::read_result(*stored);
+        if (!read.ok()) {
+            const Problem& p = read.problems.front();
             return error_response(request, http::status::internal_server_error, "internal",
-                                  "the stored result of job " + id + " cannot be read: " + error);
+                                  "the stored result of job " + id +
+                                      " cannot be read: " + p.pointer + ": " + p.message);
         }
-        ctx.solutions->keep(id, read);
-        solution = std::move(read);
+        auto kept = std::make_shared<const Result>(std::move(*read.result));
+        ctx.solutions->keep(id, kept);
+        solution = std::move(kept);
     }
     if (solution->groups.empty()) {
         return error_response(request, http::status::conflict, "no_groups",

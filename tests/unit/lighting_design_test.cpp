@@ -12,6 +12,7 @@
 #include "radiant/lighting.h"
 #include "radiant/proto/lighting_json.h"
 #include "radiant/proto/result_json.h"
+#include "radiant/proto/result_reader.h"
 #include "radiant/proto/scene_json.h"
 #include "radiant/solve.h"
 #include "solve_with.h"
@@ -497,9 +498,10 @@ TEST(LightScenes, TheStoredResultEvaluatesAnyCombinationAgain) {
     const Result r = solved(two_groups());
     ASSERT_EQ(r.status, SolveStatus::converged) << testing::describe(r);
     // Through the result document, as the service stores it.
-    std::string error;
-    const Result stored = proto::lighting_solution_from_json(proto::result_to_json(r), error);
-    ASSERT_TRUE(error.empty()) << error;
+    proto::ResultReadOutcome read = proto::read_result(proto::result_to_json(r).dump());
+    ASSERT_TRUE(read.ok()) << read.problems.front().pointer << ": "
+                           << read.problems.front().message;
+    const Result& stored = *read.result;
     LightScene mix{"mix", {{"down", 0.3}, {"panel", 0.8}}};
     const auto evaluated = evaluate_light_scene(stored, mix);
     ASSERT_TRUE(std::holds_alternative<LightSceneResult>(evaluated));

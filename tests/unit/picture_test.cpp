@@ -225,6 +225,24 @@ TEST_F(Pictures, PlanOfATaskAreaOutlinesItHatchesItsBandAndColoursEveryCheck) {
     EXPECT_NEAR(outline, 400 * 2.0 / 3.0, 12);
 }
 
+// The stored result carries the task area's compliance, so a plan drawn from it marks the area
+// as the plan of a new solve does: the same verdict and check lines, band and outline.
+TEST_F(Pictures, PlanFromAStoredResultMarksTheTaskAreaAsASolveDoes) {
+    scene_ = std::string(RADIANT_TEST_DATA) + "/pictures/task-room.json";
+    const fs::path stored = dir_ / "task-result.json";
+    const radiant::test::CliRun solved =
+        radiant::test::run_cli("solve '" + scene_ + "' --out '" + stored.string() + "'");
+    ASSERT_EQ(solved.exit_code, 0) << solved.err;
+    const Picture fresh = make("plan --size 400", "fresh.png");
+    const Picture redrawn =
+        make("plan --size 400 --result '" + stored.string() + "'", "stored.png");
+    ASSERT_FALSE(rows_with(redrawn, kFail).empty());
+    EXPECT_EQ(rows_with(redrawn, kPass), rows_with(fresh, kPass));
+    EXPECT_EQ(rows_with(redrawn, kFail), rows_with(fresh, kFail));
+    EXPECT_FALSE(rows_with(redrawn, kBandEdge).empty());
+    EXPECT_EQ(longest_run(redrawn, kInk), longest_run(fresh, kInk));
+}
+
 TEST_F(Pictures, ACameraLookingAtItsOwnEyeIsRefused) {
     const radiant::test::CliRun r =
         radiant::test::run_cli("render '" + scene_ + "' --eye 1 1 1 --target 1 1 1 --out '" +

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "radiant/proto/result_reader.h"
+
 namespace radiant::proto {
 namespace {
 
@@ -134,6 +136,90 @@ TEST(ResultJson, LengthsAreRoundedToMicrometres) {
     r.sensors[0].illuminance = {5};
     const nlohmann::json j = result_to_json(r);
     EXPECT_EQ(j["sensors"][0]["points"][0].dump(), "[0.3,1234.56789,0.0]");
+}
+
+/// converged() with what a lighting-design solve adds: a task area's compliance, a surrounding
+/// band, an observer and one group's contribution.
+Result designed() {
+    Result r = converged();
+    Compliance c;
+    c.status = Check::Status::fail;
+    c.requirement = {"table", "5.26.2 Writing", 500.0, 0.6, 19.0, std::nullopt};
+    c.checks = {{"em_lx", 500, 2, Check::Status::fail, "", ""},
+                {"ugr_l", 19, 12.5, Check::Status::pass, "east", ""}};
+    r.sensors[0].compliance = c;
+    r.sensors[0].kind = SensorKind::vertical;
+    SensorResult band = r.sensors[0];
+    band.name = "wp surrounding";
+    band.compliance.reset();
+    band.surrounding_of = "wp";
+    r.sensors.push_back(band);
+    r.observers.push_back({"east", {4, 1, 1.2}, {-1, 0, 0}, "wp", true, 12.5, 30, 2e5, 0.1});
+    GroupContribution g;
+    g.name = "down";
+    g.ra = 80;
+    for (const SensorResult& s : r.sensors) g.sensors.push_back({s.name, s.illuminance, {}, 0.02});
+    g.observers.push_back({"east", 30, 2e5, 0.1});
+    r.groups.push_back(g);
+    return r;
+}
+
+ResultReadOutcome read_back(const nlohmann::json& doc) { return read_result(doc.dump()); }
+
+TEST(ResultReader, ReadsBackTheLightingDesignMembers) {
+    const ResultReadOutcome read = read_back(result_to_json(designed()));
+    ASSERT_TRUE(read.ok()) << read.problems[0].pointer << ": " << read.problems[0].message;
+    const Result& r = *read.result;
+    ASSERT_EQ(r.sensors.size(), 2u);
+    ASSERT_TRUE(r.sensors[0].compliance);
+    const Compliance& c = *r.sensors[0].compliance;
+    EXPECT_EQ(c.status, Check::Status::fail);
+    EXPECT_EQ(c.requirement.activity, "5.26.2 Writing");
+    EXPECT_EQ(c.requirement.em_lx, 500.0);
+    EXPECT_FALSE(c.requirement.ra);
+    ASSERT_EQ(c.checks.size(), 2u);
+    EXPECT_EQ(c.checks[1].observer, "east");
+    EXPECT_EQ(c.checks[1].status, Check::Status::pass);
+    EXPECT_EQ(r.sensors[0].kind, SensorKind::vertical);
+    EXPECT_EQ(r.sensors[1].surrounding_of, "wp");
+    ASSERT_EQ(r.observers.size(), 1u);
+    EXPECT_EQ(r.observers[0].task, "wp");
+    EXPECT_TRUE(r.observers[0].standard);
+    ASSERT_EQ(r.groups.size(), 1u);
+    EXPECT_EQ(r.groups[0].ra, 80.0);
+    EXPECT_EQ(r.groups[0].sensors[1].illuminance, (std::vector<double>{1, 3}));
+    EXPECT_EQ(r.groups[0].observers[0].glare_sum, 2e5);
+}
+
+// A damaged document is refused at the value at fault, never read half: light scenes index
+// the groups' values by the sets' points, and the plan draws the checks it reads.
+TEST(ResultReader, RefusesDamagedDesignMembersAtTheirPointer) {
+    const nlohmann::json good = result_to_json(designed());
+    const auto refused_at = [&](const std::string& pointer, const nlohmann::json& value) {
+        nlohmann::json doc = good;
+        doc[nlohmann::json::json_pointer(pointer)] = value;
+        const ResultReadOutcome read = read_back(doc);
+        EXPECT_FALSE(read.result) << pointer;
+        return read.problems.empty() ? std::string() : read.problems[0].pointer;
+    };
+    EXPECT_EQ(refused_at("/groups/0/sensors/1/illuminance", {1.0}),
+              "/groups/0/sensors/1/illuminance");
+    EXPECT_EQ(refused_at("/groups/0/observers", nlohmann::json::array()), "/groups/0/observers");
+    EXPECT_EQ(refused_at("/sensors/0/compliance/checks/0/status", "maybe"),
+              "/sensors/0/compliance/checks/0/status");
+    EXPECT_EQ(refused_at("/sensors/0/compliance/requirement/em_lx", "500"),
+              "/sensors/0/compliance/requirement/em_lx");
+    EXPECT_EQ(refused_at("/sensors/0/kind", "oblique"), "/sensors/0/kind");
+    EXPECT_EQ(refused_at("/observers/0/position", {1, 2}), "/observers/0/position");
+    EXPECT_EQ(refused_at("/observers/0/standard", "yes"), "/observers/0/standard");
+    // A result from before lighting design has none of them, and reads.
+    nlohmann::json old = good;
+    for (const char* key : {"observers", "groups", "maintenance"}) old.erase(key);
+    for (auto& set : old["sensors"]) {
+        for (const char* key : {"kind", "compliance", "surrounding_of", "error_estimate"})
+            set.erase(key);
+    }
+    EXPECT_TRUE(read_back(old).ok());
 }
 
 TEST(SignificantDigits, RoundsInDecimal) {

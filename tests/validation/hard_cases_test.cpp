@@ -284,9 +284,12 @@ Scene hall(double scale, Vec3 offset, LengthUnit units) {
 }
 
 TEST(HallWithThinShelf, SameValuesFarAwayAndInMillimetres) {
-    const Result base = solve_hierarchical(hall(1, {0, 0, 0}, LengthUnit::m));
-    const Result far = solve_hierarchical(hall(1, {1e4, 1e4, 0}, LengthUnit::m));
-    const Result mm = solve_hierarchical(hall(1000, {0, 0, 0}, LengthUnit::mm));
+    // What is compared is the three placements, not the answer's accuracy: a coarse tolerance
+    // meshes and links them alike as well as a fine one does, in a fraction of the time.
+    constexpr double kTolerance = 0.05;
+    const Result base = solve_hierarchical(hall(1, {0, 0, 0}, LengthUnit::m), kTolerance);
+    const Result far = solve_hierarchical(hall(1, {1e4, 1e4, 0}, LengthUnit::m), kTolerance);
+    const Result mm = solve_hierarchical(hall(1000, {0, 0, 0}, LengthUnit::mm), kTolerance);
     for (const Result* r : {&base, &far, &mm}) {
         ASSERT_EQ(r->status, SolveStatus::converged) << describe(*r);
         expect_finite(*r);

@@ -4,8 +4,9 @@
 // then, and EventSource would otherwise reconnect.
 import { decodeEvent, EVENT_KINDS, EventFormatError } from "./events.js";
 
-/// `handlers`: { mesh, radiosity, progress, done, error } (each optional), called with decoded
-/// events, and `error` with an Error when the stream fails for good or an event is malformed.
+/// `handlers`: { open, mesh, radiosity, progress, done, error } (each optional), called with
+/// decoded events, `open` when the service has answered (events from then on are not missed),
+/// and `error` with an Error when the stream fails for good or an event is malformed.
 /// A `radiosity` event that repeats earlier values (`valuesEvent`) gets them back here, so the
 /// handler always sees both arrays. Returns { close() }.
 export function followJob(jobId, handlers, EventSourceType = globalThis.EventSource) {
@@ -33,6 +34,9 @@ export function followJob(jobId, handlers, EventSourceType = globalThis.EventSou
             handlers[kind]?.(decoded);
         });
     }
+    source.addEventListener("open", () => {
+        if (!closed) handlers.open?.();
+    });
     source.addEventListener("error", () => {
         // CONNECTING: EventSource retries on its own. CLOSED: an answer it will not retry.
         if (!closed && source.readyState === EventSourceType.CLOSED) {

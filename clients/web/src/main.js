@@ -26,6 +26,7 @@ const errors = new ErrorPanel($("#errors"));
 const state = {
     jobId: null,
     status: null,
+    following: false, // the job's event stream is open
     meshVersions: [],
     vertices: 0,
     snapshotVersion: null,
@@ -232,6 +233,7 @@ async function openJob(id) {
     renderSensorTable($("#sensor-table"), null);
     Object.assign(state, {
         jobId: id,
+        following: false,
         meshVersions: [],
         vertices: 0,
         snapshotVersion: null,
@@ -263,6 +265,7 @@ async function openJob(id) {
         showResult(id, mine);
     };
     stream = followJob(id, {
+        open: () => (state.following = true),
         mesh: (mesh) => {
             view.setMesh(mesh);
             state.meshVersions.push(mesh.meshVersion);

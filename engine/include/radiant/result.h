@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "radiant/scene.h"
@@ -195,5 +196,8 @@ struct Result {
 const char* to_string(SolveStatus status);
 const char* to_string(Check::Status status);
 const char* to_string(SensorKind kind);
+/// The inverses of to_string: nothing for a name that is not one.
+std::optional<Check::Status> check_status_named(std::string_view name);
+std::optional<SensorKind> sensor_kind_named(std::string_view name);
 
 }  // namespace radiant

@@ -29,4 +29,17 @@ const char* to_string(SensorKind kind) {
     return "planar";
 }
 
+std::optional<Check::Status> check_status_named(std::string_view name) {
+    for (const Check::Status s : {Check::Status::pass, Check::Status::fail, Check::Status::unknown})
+        if (name == to_string(s)) return s;
+    return std::nullopt;
+}
+
+std::optional<SensorKind> sensor_kind_named(std::string_view name) {
+    for (const SensorKind k : {SensorKind::planar, SensorKind::vertical, SensorKind::cylindrical,
+                               SensorKind::semi_cylindrical})
+        if (name == to_string(k)) return k;
+    return std::nullopt;
+}
+
 }  // namespace radiant

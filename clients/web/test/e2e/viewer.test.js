@@ -98,6 +98,14 @@ async function submitAndWait(timeout = 60000) {
 
 const serviceJson = async (path) => (await fetch(new URL(path, daemon.url))).json();
 
+async function waitForStatus(jobId, status) {
+    for (let i = 0; i < 600; ++i) {
+        if ((await serviceJson(`v1/jobs/${jobId}`)).status === status) return;
+        await new Promise((resolve) => setTimeout(resolve, 50));
+    }
+    assert.fail(`job ${jobId} never became ${status}`);
+}
+
 /// Mean [r, g, b] of the 9 × 9 pixels around the screen point of scene point p.
 async function colourAt(png, p) {
     const { x, y } = await page.evaluate((q) => window.radiantViewer.project(q), p);
@@ -194,10 +202,34 @@ test("false colour lux: a blue-to-red legend, the lamp's tile hottest, the resul
 });
 
 test("mesh versions: a hierarchical solve's refined meshes are followed to the final one", async () => {
+    // The service keeps only a job's latest mesh, and this solve takes a fraction of a second:
+    // the viewer sees its refinements only if it follows the job before the solve starts. So the
+    // one worker is kept busy until the viewer's job is queued and followed.
+    const blocker = await fetch(new URL("v1/jobs", daemon.url), {
+        method: "POST",
+        headers: { "Content-Type": "application/json" },
+        body: JSON.stringify(
+            lampRoom("blocker", { method: "monte-carlo", tolerance: 1e-6, max_seconds: 120 }),
+        ),
+    });
+    assert.equal(blocker.status, 202);
+    const blockerId = (await blocker.json()).id;
+    await waitForStatus(blockerId, "running");
     await dropScene(
         lampRoom("lamp-room-hierarchical", { method: "hierarchical", tolerance: 0.05 }),
     );
-    const state = await submitAndWait(120000);
+    await page.waitForFunction(() => !document.querySelector("#submit").disabled);
+    await page.click("#submit");
+    await page.waitForFunction(() => {
+        const { status, following } = window.radiantViewer.state;
+        return status === "queued" && following;
+    });
+    await fetch(new URL(`v1/jobs/${blockerId}`, daemon.url), { method: "DELETE" });
+    await page.waitForFunction(() => window.radiantViewer.state.resultStatus !== null, null, {
+        timeout: 120000,
+    });
+    await page.waitForTimeout(200); // the last frame
+    const state = await page.evaluate(() => structuredClone(window.radiantViewer.state));
     assert.ok(new Set(state.meshVersions).size >= 2, `mesh versions ${state.meshVersions}`);
     const final = await serviceJson(`v1/jobs/${state.jobId}/result?include=mesh`);
     assert.equal(state.vertices, final.mesh.vertices.length);

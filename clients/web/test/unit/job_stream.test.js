@@ -47,6 +47,7 @@ test("events reach their handlers decoded, and the stream closes after done", ()
     followJob(
         "a b",
         {
+            open: () => seen.push(["open"]),
             mesh: (m) => seen.push(["mesh", m.meshVersion]),
             radiosity: (r) => seen.push(["radiosity", r.version]),
             progress: (p) => seen.push(["progress", p.fraction]),
@@ -56,6 +57,7 @@ test("events reach their handlers decoded, and the stream closes after done", ()
     );
     const source = FakeEventSource.last;
     assert.equal(source.url, "v1/jobs/a%20b/events");
+    source.emit("open");
     source.emit("mesh", mesh);
     source.emit("radiosity", radiosity);
     source.emit("progress", '{"status":"running","fraction":0.5}');
@@ -63,6 +65,7 @@ test("events reach their handlers decoded, and the stream closes after done", ()
     assert.equal(source.readyState, FakeEventSource.CLOSED);
     source.emit("progress", '{"status":"running","fraction":0.9}'); // after close: ignored
     assert.deepEqual(seen, [
+        ["open"],
         ["mesh", 1],
         ["radiosity", 3],
         ["progress", 0.5],

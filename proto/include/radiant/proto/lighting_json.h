@@ -24,11 +24,6 @@ void add_lighting(const Result& result, nlohmann::json& doc);
 /// One light scene of the result (its `sensors` written by `sensors_json`).
 nlohmann::json light_scene_to_json(const LightSceneResult& scene);
 
-/// A stored radiant-result/1 document's light-scene shapes back: its sensor sets (names, kinds,
-/// bands, requirements, point counts), observers and group contributions — what
-/// evaluate_light_scene reads. Empty string in `error` when it parsed. Never throws.
-Result lighting_solution_from_json(const nlohmann::json& doc, std::string& error);
-
 /// A posted light scene: {"name": "...", "dimming": {"GROUP": 0–1, ...}}; problems carry
 /// pointers into the body. Never throws.
 std::variant<LightScene, std::vector<Problem>> parse_light_scene(std::string_view body);
