@@ -55,7 +55,8 @@ void print_scaling(std::ostream& out, const std::vector<BenchRow>& rows,
 /// For each scene and method, the least time among rows whose RMS error is at most `target`.
 void print_time_to_error(std::ostream& out, const std::vector<BenchRow>& rows, double target);
 
-/// The rows whose largest error against the reference exceeds their own error estimate.
+/// Issue 27's rule for the estimate, row by row: the rows whose RMS error against the reference
+/// exceeds their estimate, and those whose RMS error is above 0.1 % and under a quarter of it.
 void print_estimate_misses(std::ostream& out, const std::vector<BenchRow>& rows);
 
 }  // namespace radiant::bench

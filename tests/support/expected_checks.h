@@ -62,6 +62,20 @@ inline double largest_relative_error(const Result& result, const nlohmann::json&
     return largest;
 }
 
+/// The RMS of the surface and energy checks' relative errors: the true error as radiant-bench
+/// measures it on scenes without a reference sensor set, what the error estimate bounds.
+inline double rms_relative_error(const Result& result, const nlohmann::json& checks) {
+    double squares = 0;
+    std::size_t count = 0;
+    for (const auto& check : checks) {
+        if (const std::optional<double> e = relative_error(result, check)) {
+            squares += *e * *e;
+            ++count;
+        }
+    }
+    return count > 0 ? std::sqrt(squares / static_cast<double>(count)) : 0.0;
+}
+
 /// Expects every check to hold.
 inline void expect_checks(const Result& result, const nlohmann::json& checks,
                           const std::string& label) {

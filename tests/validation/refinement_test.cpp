@@ -57,8 +57,8 @@ TEST_P(Refinement, MeetsTheToleranceAndNearsTheReference) {
 
     const nlohmann::json expected =
         testing::read_json(data_path("box_rooms/expected.json"))[std::string(c.name)];
-    const double before = testing::largest_relative_error(unrefined, expected);
-    const double after = testing::largest_relative_error(refined, expected);
+    const double before = testing::rms_relative_error(unrefined, expected);
+    const double after = testing::rms_relative_error(refined, expected);
     EXPECT_LT(after, before) << describe(refined);
     EXPECT_GE(refined.stats.error_estimate, after) << describe(refined);
 }
@@ -66,10 +66,16 @@ TEST_P(Refinement, MeetsTheToleranceAndNearsTheReference) {
 // The hierarchical solver's first solve of the panel room at 0.01 no longer needs refining since
 // links share their sources by the factor (see Link), nor the cubes' at 0.005 since leaves are
 // completed through their inherited links first (see leaf_completion.h); the corridor's at 0.01,
-// whose far wall inherits the bright end's light through coarse links, still does.
+// whose far wall inherits the bright end's light through coarse links, still does. The dense
+// path's estimate (issue 27) no longer asks for it where its mesh follows the tolerance (the
+// ρ 0.2 cube at 0.01: 600 patches, estimate 0.0017 for an RMS error of 0.0012); it does where
+// the tolerance gives a mesh too coarse to check — the scene's coarsest at 0.3, or a tolerance
+// above 1/3, which claimed its floor (0.02 at 0.4 for the mixed cube's 24 patches, whose RMS
+// error is 2.0 %).
 INSTANTIATE_TEST_SUITE_P(BoxRooms, Refinement,
                          ::testing::Values(Case{"box-corridor-panel", "hierarchical", 0.01},
-                                           Case{"box-cube-rho0.2", "direct", 0.01}),
+                                           Case{"box-cube-rho0.2", "direct", 0.3},
+                                           Case{"box-cube-mixed", "direct", 0.4}),
                          [](const auto& param_info) {
                              return testing::test_name(std::string(param_info.param.name) + "_" +
                                                        param_info.param.method);

@@ -1,7 +1,8 @@
 // Every scene of the shared validation set against its expected answer (tests/data/scenes,
 // copied from shared/validation so that a clone is self-contained), with default settings —
 // and with `method: hierarchical` forced, since every accuracy bar must hold with it too; and
-// whether the estimate bounds the error at a coarse tolerance.
+// whether the estimate bounds the error at a coarse tolerance, and stays within 4× of it there.
+// The error is the RMS of the checks' relative errors, as radiant-bench measures it (issue 27).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -16,6 +17,11 @@ namespace radiant {
 namespace {
 
 using testing::data_path;
+
+// Issue 27: where the true error is above kReadableError, the estimate is at most kTightFactor
+// times it.
+constexpr double kReadableError = 1e-3;
+constexpr double kTightFactor = 4;
 
 nlohmann::json expected() { return testing::read_json(data_path("scenes/expected.json")); }
 
@@ -33,7 +39,7 @@ void expect_matches(const std::string& name, const std::string& method) {
     testing::expect_checks(result, all[name], name + " " + method);
     // The estimate includes the mesh's error (and the hierarchy's, its completion's), so it
     // bounds the true one.
-    EXPECT_GE(result.stats.error_estimate, testing::largest_relative_error(result, all[name]))
+    EXPECT_GE(result.stats.error_estimate, testing::rms_relative_error(result, all[name]))
         << name << " " << method;
 }
 
@@ -48,9 +54,16 @@ TEST_P(ValidationScene, EstimateBoundsTheErrorAtACoarseTolerance) {
     options.tolerance = 0.1;
     const Result result = solve(scene, options);
     ASSERT_EQ(result.status, SolveStatus::converged) << result.error;
-    EXPECT_GE(result.stats.error_estimate,
-              testing::largest_relative_error(result, expected()[name]))
-        << name;
+    const double error = testing::rms_relative_error(result, expected()[name]);
+    EXPECT_GE(result.stats.error_estimate, error) << name;
+    // A tight bound where the error is large enough to read (issue 27: at most 4× where it is
+    // above 0.1 %). The cube's dense estimate was 17× its error at 0.1 when it counted the
+    // largest difference over surfaces three times over.
+    if (error > kReadableError) {
+        EXPECT_LE(result.stats.error_estimate, kTightFactor * error)
+            << name << ": " << result.stats.patches << " patches, discretisation part "
+            << result.stats.error_parts.discretisation;
+    }
 }
 
 TEST_P(ValidationScene, MatchesExpectedHierarchical) { expect_matches(GetParam(), "hierarchical"); }

@@ -44,9 +44,12 @@ struct SolveStats {
     std::uint64_t rays = 0;      ///< visibility rays cast, form factors and sensors together
     double seconds = 0;
     double unshot_fraction = 0;  ///< unshot power / emitted power (0 for non-shooting solvers)
-    /// Relative error the answer is estimated not to exceed: for the Monte Carlo method the
-    /// sensors' RMS error relative to their mean (worst sensor set); for the radiosity methods a
-    /// bound on the area-weighted L1 error, ‖r‖/(1−q) / Σ A·B, plus the mesh check's estimate.
+    /// Relative error the answer is estimated not to exceed: the sensors' RMS error relative to
+    /// their mean (worst sensor set) for the Monte Carlo method and the dense radiosity
+    /// solvers' mesh check (without sensors: the RMS of the surfaces' relative errors); for the
+    /// radiosity methods at least the bound on the linear system's area-weighted L1 error,
+    /// ‖r‖/(1−q) / Σ A·B, and for the hierarchical one its largest surface or sensor difference
+    /// (docs/accuracy.md).
     double error_estimate = 0;
     double emitted_flux_lm = 0;   ///< from emitting surfaces and luminaires
     double absorbed_flux_lm = 0;  ///< Σ A (1−ρ) H over all surface sides

@@ -17,36 +17,106 @@ double relative(double a, double b, double dark) {
     return scale > 0 ? std::abs(a - b) / scale : 0.0;
 }
 
+// The scene's surface area and the values a surface's mean irradiance and radiosity are measured
+// against where they are darker: a tenth of their area-weighted means.
+struct DarkScales {
+    double area_m2 = 0, irradiance = 0, radiosity = 0;
+};
+
+DarkScales dark_scales(const Result& r) {
+    DarkScales d;
+    for (const SurfaceResult& s : r.surfaces) {
+        d.area_m2 += s.area_m2;
+        d.irradiance += s.area_m2 * s.average_irradiance;
+        d.radiosity += s.area_m2 * s.average_radiosity;
+    }
+    if (d.area_m2 > 0) {
+        d.irradiance *= kDarkShare / d.area_m2;
+        d.radiosity *= kDarkShare / d.area_m2;
+    }
+    return d;
+}
+
+// What a sensor value (or set) darker than it is measured against: a tenth of the mean of all
+// sensor points.
+double sensor_dark_scale(const Result& r) {
+    double sum = 0;
+    std::size_t count = 0;
+    for (const SensorResult& s : r.sensors) {
+        for (const double e : s.illuminance) sum += e;
+        count += s.illuminance.size();
+    }
+    return count > 0 ? kDarkShare * sum / static_cast<double>(count) : 0;
+}
+
+bool sensors_correspond(const Result& a, const Result& b) {
+    if (a.sensors.empty() || a.sensors.size() != b.sensors.size()) return false;
+    for (std::size_t k = 0; k < a.sensors.size(); ++k) {
+        if (a.sensors[k].illuminance.size() != b.sensors[k].illuminance.size()) return false;
+    }
+    return true;
+}
+
+// Sensor sets: each set's RMS difference over its mean, the largest.
+double sensor_rms_difference(const Result& a, const Result& b) {
+    const double dark = sensor_dark_scale(a);
+    double worst = 0;
+    for (std::size_t k = 0; k < a.sensors.size(); ++k) {
+        const std::vector<double>& x = a.sensors[k].illuminance;
+        const std::vector<double>& y = b.sensors[k].illuminance;
+        if (x.empty()) continue;
+        double mean = 0, squares = 0;
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            mean += x[i];
+            squares += (x[i] - y[i]) * (x[i] - y[i]);
+        }
+        const double n = static_cast<double>(x.size());
+        const double scale = std::max(mean / n, dark);
+        if (scale > 0) worst = std::max(worst, std::sqrt(squares / n) / scale);
+    }
+    return worst;
+}
+
+// Surfaces: the RMS over the surfaces that count of their mean irradiance's and mean
+// radiosity's relative differences.
+double surface_rms_difference(const Result& a, const Result& b) {
+    if (a.surfaces.size() != b.surfaces.size()) return 0;
+    const DarkScales dark = dark_scales(a);
+    double squares = 0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < a.surfaces.size(); ++i) {
+        const SurfaceResult& x = a.surfaces[i];
+        const SurfaceResult& y = b.surfaces[i];
+        if (x.area_m2 < kSmallSurfaceShare * dark.area_m2) continue;
+        const double e = relative(x.average_irradiance, y.average_irradiance, dark.irradiance);
+        const double r = relative(x.average_radiosity, y.average_radiosity, dark.radiosity);
+        squares += e * e + r * r;
+        count += 2;
+    }
+    return count > 0 ? std::sqrt(squares / static_cast<double>(count)) : 0.0;
+}
+
 }  // namespace
+
+double relative_rms_difference(const Result& a, const Result& b) {
+    return sensors_correspond(a, b) ? sensor_rms_difference(a, b) : surface_rms_difference(a, b);
+}
 
 double largest_relative_difference(const Result& a, const Result& b) {
     double worst = 0;
     if (a.surfaces.size() == b.surfaces.size()) {
-        double area = 0, irradiance = 0, radiosity = 0;
-        for (const SurfaceResult& s : a.surfaces) {
-            area += s.area_m2;
-            irradiance += s.area_m2 * s.average_irradiance;
-            radiosity += s.area_m2 * s.average_radiosity;
-        }
-        const double dark_irradiance = area > 0 ? kDarkShare * irradiance / area : 0;
-        const double dark_radiosity = area > 0 ? kDarkShare * radiosity / area : 0;
+        const DarkScales dark = dark_scales(a);
         for (std::size_t i = 0; i < a.surfaces.size(); ++i) {
             const SurfaceResult& x = a.surfaces[i];
             const SurfaceResult& y = b.surfaces[i];
-            if (x.area_m2 < kSmallSurfaceShare * area) continue;
+            if (x.area_m2 < kSmallSurfaceShare * dark.area_m2) continue;
             worst = std::max({worst,
-                              relative(x.average_irradiance, y.average_irradiance, dark_irradiance),
-                              relative(x.average_radiosity, y.average_radiosity, dark_radiosity)});
+                              relative(x.average_irradiance, y.average_irradiance, dark.irradiance),
+                              relative(x.average_radiosity, y.average_radiosity, dark.radiosity)});
         }
     }
     if (a.sensors.size() == b.sensors.size()) {
-        double sum = 0;
-        std::size_t count = 0;
-        for (const SensorResult& s : a.sensors) {
-            for (const double e : s.illuminance) sum += e;
-            count += s.illuminance.size();
-        }
-        const double dark = count > 0 ? kDarkShare * sum / static_cast<double>(count) : 0;
+        const double dark = sensor_dark_scale(a);
         for (std::size_t k = 0; k < a.sensors.size(); ++k) {
             const std::vector<double>& x = a.sensors[k].illuminance;
             const std::vector<double>& y = b.sensors[k].illuminance;

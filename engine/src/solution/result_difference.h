@@ -13,4 +13,12 @@ namespace radiant {
 /// room does not count as all error.
 double largest_relative_difference(const Result& a, const Result& b);
 
+/// How far `b` is from `a` in the measure the error estimate states (issue 27): for each sensor
+/// set, the RMS over its points of the difference relative to the set's mean in `a`, the
+/// largest over the sets (a set darker than a tenth of the mean of all sensor points measured
+/// against that tenth). A scene without sensors (or whose sensor sets differ in shape) takes
+/// instead the RMS of the relative differences of the mean irradiance and the mean radiosity of
+/// the surfaces that count in largest_relative_difference, each measured as there.
+double relative_rms_difference(const Result& a, const Result& b);
+
 }  // namespace radiant
