@@ -51,7 +51,8 @@ double absorbed_over_emitted(const Result& r) {
 // ---------------------------------------------------------------------------------------------
 // Reflectance 0.99 and 0.999: a closed room with a closed block inside, every surface emitting
 // E = 1: B = E / (1 − ρ) everywhere (100 and 1000), reached to 2 %. How fast is measured by
-// radiant-bench (furnace-rho0.99, furnace-rho0.999), not here: a timed test fails on a busy machine.
+// radiant-bench (furnace-rho0.99, furnace-rho0.999), not here: a timed test fails on a busy
+// machine.
 
 class HighReflectanceFurnace : public ::testing::TestWithParam<double> {};
 
