@@ -65,6 +65,23 @@ inline Polygon ceiling_rect(double x0, double x1, double y0, double y1, double z
     return rect({x0, y0, z}, {0, y1 - y0, 0}, {x1 - x0, 0, 0});
 }
 
+/// nx × ny square ceiling tiles of side `side`, facing down at height z, the first at (x0, y0)
+/// and the others `pitch` apart; named PREFIX-i-j.
+inline std::vector<Surface> ceiling_tiles(const std::string& prefix, const std::string& material,
+                                          int nx, int ny, double x0, double y0, double pitch,
+                                          double side, double z) {
+    std::vector<Surface> tiles;
+    for (int i = 0; i < nx; ++i) {
+        for (int j = 0; j < ny; ++j) {
+            const double x = x0 + pitch * i, y = y0 + pitch * j;
+            tiles.push_back(
+                polygon_surface(prefix + "-" + std::to_string(i) + "-" + std::to_string(j),
+                                material, ceiling_rect(x, x + side, y, y + side, z)));
+        }
+    }
+    return tiles;
+}
+
 /// The closed room [0,X] × [0,Y] × [0,Z]: room_without_ceiling's surfaces, then its `ceiling`.
 inline std::vector<Surface> closed_room(double x, double y, double z, const std::string& material) {
     std::vector<Surface> surfaces = room_without_ceiling(x, y, z, material);

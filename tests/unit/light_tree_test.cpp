@@ -99,14 +99,8 @@ Scene hall(bool wall) {
     scene.name = "hall";
     scene.materials = {testing::gray("wall", 0.5), testing::gray("panel", 0.5, 2000)};
     scene.surfaces = testing::closed_room(16, 8, 3, "wall");
-    for (int i = 0; i < 8; ++i) {
-        for (int j = 0; j < 4; ++j) {
-            const double x0 = 0.7 + 2 * i, y0 = 0.7 + 2 * j;
-            scene.surfaces.push_back(testing::polygon_surface(
-                "panel-" + std::to_string(i) + "-" + std::to_string(j), "panel",
-                testing::ceiling_rect(x0, x0 + 0.6, y0, y0 + 0.6, 2.95)));
-        }
-    }
+    for (Surface& panel : testing::ceiling_tiles("panel", "panel", 8, 4, 0.7, 0.7, 2, 0.6, 2.95))
+        scene.surfaces.push_back(std::move(panel));
     for (int i = 0; i < 12; ++i) {
         scene.luminaires.push_back(testing::luminaire("downlight-" + std::to_string(i),
                                                       {0.5 + 1.25 * i + 0.1, 4, 2.5}, 800,

@@ -118,14 +118,8 @@ TEST(MemoryBudget, RefinementThatWouldNotFitStopsWithTheBestAnswerSoFar) {
 // which the budget must count before the gather is made, not find out after.
 TEST(MemoryBudget, CylindricalPointsUnderManyEmittersAreCountedBeforeTheGather) {
     Scene scene = office();
-    for (int i = 0; i < 40; ++i) {
-        for (int j = 0; j < 40; ++j) {
-            const double x = 2 + 0.1 * i, y = 1 + 0.1 * j;
-            scene.surfaces.push_back(testing::polygon_surface(
-                "tile-" + std::to_string(i) + "-" + std::to_string(j), "panel",
-                testing::ceiling_rect(x, x + 0.09, y, y + 0.09, 2.98)));
-        }
-    }
+    for (Surface& tile : testing::ceiling_tiles("tile", "panel", 40, 40, 2, 1, 0.1, 0.09, 2.98))
+        scene.surfaces.push_back(std::move(tile));
     SensorSet faces =
         testing::sensor_grid("faces", {0.5, 0.5, 1.2}, {7, 0, 0}, {0, 5, 0}, 100, 100);
     faces.kind = SensorKind::cylindrical;
