@@ -62,9 +62,9 @@ Fit log_log_slope(const std::vector<std::pair<double, double>>& xy) {
 
 const std::vector<std::string>& table_header() {
     static const std::vector<std::string> header{
-        "scene",     "triangles",      "method",         "tolerance", "seconds",
-        "rays",      "elements",       "links",          "peak MiB",  "rms error",
-        "max error", "error estimate", "estimate / rms", "status",    "stages (s)"};
+        "scene",          "triangles", "method",     "tolerance",     "seconds",   "rays",
+        "elements",       "links",     "peak MiB",   "rms error",     "max error", "error estimate",
+        "estimate / rms", "status",    "stages (s)", "estimate parts"};
     return header;
 }
 
@@ -83,7 +83,8 @@ std::vector<std::string> table_cells(const BenchRow& r) {
             sci(r.error_estimate),
             fixed(r.error_estimate / r.rms_error, 2),
             r.status,
-            r.stages};
+            r.stages,
+            r.estimate_parts};
 }
 
 void print_markdown_header(std::ostream& out) {
@@ -92,7 +93,7 @@ void print_markdown_header(std::ostream& out) {
     for (const auto& h : header) out << ' ' << h << " |";
     out << "\n|";
     for (std::size_t i = 0; i < header.size(); ++i) {
-        const bool text = i == 0 || i == 2 || i + 2 >= header.size();
+        const bool text = i == 0 || i == 2 || i + 3 >= header.size();
         out << (text ? " --- |" : " ---: |");
     }
     out << '\n';

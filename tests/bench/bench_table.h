@@ -22,9 +22,10 @@ struct BenchRow {
     double peak_mib = 0;
     double rms_error = 0, max_error = 0;  ///< relative, against the scene's reference
     double error_estimate = 0;
-    std::string status;   ///< converged, stopped, failed, crashed; a peer's runs: done
-    std::string setting;  ///< a peer's command-line settings (empty for Radiant's rows)
-    std::string stages;   ///< seconds per stage of the solve
+    std::string status;          ///< converged, stopped, failed, crashed; a peer's runs: done
+    std::string setting;         ///< a peer's command-line settings (empty for Radiant's rows)
+    std::string stages;          ///< seconds per stage of the solve
+    std::string estimate_parts;  ///< the estimate's non-zero parts (stats.error_parts)
 };
 
 /// A table cell: `v` with `digits` decimals, or "n/a" for NaN.

@@ -119,6 +119,22 @@ std::string stage_summary(const std::vector<StageStats>& stages) {
     return out.str();
 }
 
+// "residual 1.2e-05 · discretisation 0.0031 …": the estimate's non-zero parts, so that a row
+// shows which part decides it.
+std::string estimate_summary(const ErrorParts& parts) {
+    const std::pair<const char*, double> named[] = {{"residual", parts.residual},
+                                                    {"discretisation", parts.discretisation},
+                                                    {"gather noise", parts.gather_noise},
+                                                    {"photon noise", parts.photon_noise},
+                                                    {"completion", parts.completion}};
+    std::ostringstream out;
+    out.precision(2);
+    for (const auto& [name, value] : named) {
+        if (value > 0) out << (out.tellp() > 0 ? " · " : "") << name << ' ' << value;
+    }
+    return out.str();
+}
+
 // A solve in a child: the row's fields as JSON (the child's memory and time are its own).
 nlohmann::json solve_case(const Scene& scene, const SolveOptions& options,
                           const ReferenceAnswer& reference) {
@@ -135,6 +151,7 @@ nlohmann::json solve_case(const Scene& scene, const SolveOptions& options,
             {"max", number(error.max)},
             {"estimate", number(result.stats.error_estimate)},
             {"stages", stage_summary(result.stats.stages)},
+            {"estimate_parts", estimate_summary(result.stats.error_parts)},
             {"sensor", result.sensors.empty() ? nlohmann::json(nullptr)
                                               : nlohmann::json(result.sensors[0].illuminance)}};
 }
@@ -554,6 +571,7 @@ int main(int argc, char** argv) {
                     row.max_error = number_or_nan(v.at("max"));
                     row.error_estimate = number_or_nan(v.at("estimate"));
                     row.stages = v.at("stages");
+                    row.estimate_parts = v.at("estimate_parts");
                     if (row.status == "failed") {
                         std::cerr << name << " / " << method << ": "
                                   << v.at("error").get<std::string>() << '\n';
