@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,21 @@ TEST(ForkJoin, TasksSeeWhatCameBeforeAndTheCallerSeesWhatTheyDid) {
     for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(output[i], 2.0 * static_cast<double>(i)) << i;
 }
 
+// The caller reads what the tasks wrote also when one of them threw: in the TSan build this
+// reports a race unless the join edge holds on that path too.
+TEST(ForkJoin, ATasksExceptionReachesTheCallerAfterTheJoin) {
+    std::vector<int> done(1000, 0);
+    EXPECT_THROW(run_with_threads(2,
+                                  [&] {
+                                      parallel_for(0, done.size(), [&](std::size_t i) {
+                                          done[i] = 1;
+                                          if (i == 500) throw std::runtime_error("task 500");
+                                      });
+                                  }),
+                 std::runtime_error);
+    EXPECT_EQ(done[500], 1);
+}
+
 TEST(ForkJoin, PerThreadValuesCombineToTheTotal) {
     PerThread<std::size_t> sums([] { return std::size_t{0}; });
     run_with_threads(2, [&] { parallel_for(1, 1001, [&](std::size_t i) { sums.local() += i; }); });
@@ -67,16 +83,23 @@ TEST(ForkJoin, ArenaHasTheThreadsAskedFor) {
 
 #ifdef RADIANT_TEST_UNDER_TSAN
 // Both tasks of a two-index loop wait (with relaxed atomics, which order nothing for TSan) until
-// the other has started, so they run on two threads, then write the same plain int.
+// the other has started, so they run on two threads; then task 0 writes a plain int and task 1
+// writes it after it (TSan may miss two writes at the same instant).
 void race_between_two_tasks() {
     std::atomic<int> started{0};
+    std::atomic<bool> written{false};
     int shared = -1;
     run_with_threads(2, [&] {
         parallel_for(0, 2, [&](std::size_t i) {
             started.fetch_add(1, std::memory_order_relaxed);
             while (started.load(std::memory_order_relaxed) < 2) {
             }
+            if (i == 1) {
+                while (!written.load(std::memory_order_relaxed)) {
+                }
+            }
             shared = static_cast<int>(i);
+            written.store(true, std::memory_order_relaxed);
         });
     });
     std::exit(shared == 0 || shared == 1 ? 0 : 1);

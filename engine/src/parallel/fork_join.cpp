@@ -24,15 +24,29 @@ void release(const void*) {}
 void acquire(const void*) {}
 #endif
 
-// The two edges of one fork-join: the tokens' addresses name them for TSan.
-struct ForkJoin {
-    char fork = 0, join = 0;
-    ForkJoin() { release(&fork); }
+// The two edges of one fork-join, named for TSan by the tokens' addresses. It is made before the
+// tasks fork and destroyed after they joined; a Task lives as long as one task. Destructors keep
+// the edges when a task throws and TBB passes the exception on to the caller.
+class ForkJoin {
+public:
+    ForkJoin() { release(&fork_); }
+    ~ForkJoin() { acquire(&join_); }
     ForkJoin(const ForkJoin&) = delete;
     ForkJoin& operator=(const ForkJoin&) = delete;
-    void task_starts() const { acquire(&fork); }
-    void task_ends() const { release(&join); }
-    void joined() const { acquire(&join); }
+
+    class Task {
+    public:
+        explicit Task(const ForkJoin& edges) : edges_(edges) { acquire(&edges_.fork_); }
+        ~Task() { release(&edges_.join_); }
+        Task(const Task&) = delete;
+        Task& operator=(const Task&) = delete;
+
+    private:
+        const ForkJoin& edges_;
+    };
+
+private:
+    char fork_ = 0, join_ = 0;
 };
 
 }  // namespace
@@ -45,11 +59,9 @@ void parallel_chunks(std::size_t begin, std::size_t end, std::size_t grain,
     const ForkJoin edges;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, grain),
                       [&](const tbb::blocked_range<std::size_t>& range) {
-                          edges.task_starts();
+                          const ForkJoin::Task task(edges);
                           chunk(range.begin(), range.end());
-                          edges.task_ends();
                       });
-    edges.joined();
 }
 
 }  // namespace detail
@@ -59,11 +71,9 @@ void run_with_threads(int threads, BorrowedCall<void()> work) {
     // execute() may hand `work` to another thread when the arena has no free slot.
     const ForkJoin edges;
     arena.execute([&] {
-        edges.task_starts();
+        const ForkJoin::Task task(edges);
         work();
-        edges.task_ends();
     });
-    edges.joined();
 }
 
 void run_library_parallel_work(BorrowedCall<void()> work) {

@@ -38,8 +38,8 @@ void parallel_chunks(std::size_t begin, std::size_t end, std::size_t grain,
                      BorrowedCall<void(std::size_t, std::size_t)> chunk);
 }  // namespace detail
 
-// body(first, last) for disjoint chunks [first, last) that cover [begin, end), split no finer
-// than `grain` indices, on the current arena's threads; returns when every chunk is done.
+// body(first, last) for disjoint chunks [first, last) that cover [begin, end), on the current
+// arena's threads (a chunk of `grain` indices or fewer is not split); returns when all are done.
 template <class ChunkBody>
 void parallel_for_chunks(std::size_t begin, std::size_t end, std::size_t grain, ChunkBody&& body) {
     detail::parallel_chunks(begin, end, grain, body);
