@@ -1,5 +1,7 @@
 #include "parallel/fork_join.h"
 
+#include <memory>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -19,25 +21,40 @@ namespace {
 #ifdef RADIANT_TSAN_EDGES
 void release(const void* token) { __tsan_release(const_cast<void*>(token)); }
 void acquire(const void* token) { __tsan_acquire(const_cast<void*>(token)); }
+// On the heap, not the stack: TSan forgets a token's clock when its memory is freed, not when a
+// frame returns, and a stack address comes back in later fork-joins, also of a new thread that
+// reuses a finished thread's stack.
+class Tokens {
+public:
+    const void* fork() const { return &bytes_[0]; }
+    const void* join() const { return &bytes_[1]; }
+
+private:
+    std::unique_ptr<char[]> bytes_ = std::make_unique<char[]>(2);
+};
 #else
 void release(const void*) {}
 void acquire(const void*) {}
+struct Tokens {
+    const void* fork() const { return nullptr; }
+    const void* join() const { return nullptr; }
+};
 #endif
 
-// The two edges of one fork-join, named for TSan by the tokens' addresses. It is made before the
+// The two edges of one fork-join, named for TSan by its tokens' addresses. It is made before the
 // tasks fork and destroyed after they joined; a Task lives as long as one task. Destructors keep
 // the edges when a task throws and TBB passes the exception on to the caller.
 class ForkJoin {
 public:
-    ForkJoin() { release(&fork_); }
-    ~ForkJoin() { acquire(&join_); }
+    ForkJoin() { release(tokens_.fork()); }
+    ~ForkJoin() { acquire(tokens_.join()); }
     ForkJoin(const ForkJoin&) = delete;
     ForkJoin& operator=(const ForkJoin&) = delete;
 
     class Task {
     public:
-        explicit Task(const ForkJoin& edges) : edges_(edges) { acquire(&edges_.fork_); }
-        ~Task() { release(&edges_.join_); }
+        explicit Task(const ForkJoin& edges) : edges_(edges) { acquire(edges_.tokens_.fork()); }
+        ~Task() { release(edges_.tokens_.join()); }
         Task(const Task&) = delete;
         Task& operator=(const Task&) = delete;
 
@@ -46,7 +63,7 @@ public:
     };
 
 private:
-    char fork_ = 0, join_ = 0;
+    Tokens tokens_;
 };
 
 }  // namespace
