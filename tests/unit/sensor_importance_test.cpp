@@ -3,13 +3,12 @@
 // read does not change.
 #include <gtest/gtest.h>
 
-#include <tbb/task_arena.h>
-
 #include <string>
 #include <vector>
 
 #include "hierarchy/sensor_importance.h"
 #include "linkable_scene.h"
+#include "parallel/fork_join.h"
 #include "scene_builder.h"
 #include "solve_with.h"
 
@@ -97,9 +96,9 @@ TEST(SensorImportance, StopsWhenAsked) {
 TEST(SensorImportance, SameForAnyThreadCount) {
     const Linkable linkable(two_sealed_rooms(false));
     ImportanceEstimate one;
-    tbb::task_arena(1).execute([&] { one = linkable.importance(); });
+    run_with_threads(1, [&] { one = linkable.importance(); });
     ImportanceEstimate two;
-    tbb::task_arena(2).execute([&] { two = linkable.importance(); });
+    run_with_threads(2, [&] { two = linkable.importance(); });
     EXPECT_EQ(one.rays, two.rays);
     EXPECT_EQ(one.per_area, two.per_area);
     EXPECT_EQ(one.refinement_weight, two.refinement_weight);

@@ -1,7 +1,6 @@
 // Visibility: Embree against the double-precision brute-force oracle, plus the hard cases of
 // validation/README.md §5.4 (light leaks through thin walls) and §5.7 (huge scale range).
 #include <gtest/gtest.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>
@@ -13,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "parallel/fork_join.h"
 #include "visibility/visibility.h"
 
 namespace radiant {
@@ -467,11 +467,11 @@ TEST(Visibility, ParallelQueriesMatchSerial) {
         serial_vis[i] = vis->visible(queries[i].from, queries[i].to);
         serial_hit[i] = vis->first_hit(queries[i].from, queries[i].to - queries[i].from, 1.0);
     }
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    parallel_for(0, n, [&](std::size_t i) {
         parallel_vis[i] = vis->visible(queries[i].from, queries[i].to);
         parallel_hit[i] = vis->first_hit(queries[i].from, queries[i].to - queries[i].from, 1.0);
     });
-    tbb::parallel_for(std::size_t{0}, n / 100, [&](std::size_t chunk) {
+    parallel_for(0, n / 100, [&](std::size_t chunk) {
         vis->visible_batch(std::span(queries).subspan(chunk * 100, 100),
                            std::span(parallel_batch).subspan(chunk * 100, 100));
     });

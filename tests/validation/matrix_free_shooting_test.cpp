@@ -12,9 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include <tbb/task_arena.h>
-
 #include "cube_ceiling.h"
+#include "parallel/fork_join.h"
 #include "scene_builder.h"
 #include "scene_files.h"
 #include "solver/pipeline.h"
@@ -33,8 +32,8 @@ Result run(const Scene& scene, const SolveOptions& options, bool matrix_free,
     // Both on the mesh of the tolerance (matrix-free shooting is never refined).
     limits.max_refinement = 1;
     Result result;
-    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-    arena.execute([&] { result = Pipeline(scene, options, observer, cancel, limits).run(); });
+    run_with_threads(options.threads,
+                     [&] { result = Pipeline(scene, options, observer, cancel, limits).run(); });
     return result;
 }
 

@@ -4,12 +4,11 @@
 #include <cmath>
 #include <map>
 
-#include <tbb/parallel_for.h>
-
 #include "checks/side_hit.h"
 #include "formfactor/luminaire_light.h"
 #include "geometry/cosine_direction.h"
 #include "geometry/random.h"
+#include "parallel/fork_join.h"
 
 namespace radiant {
 namespace {
@@ -174,7 +173,7 @@ LightPaths trace_light_paths(const CheckedScene& input, std::uint64_t& rays) {
     std::vector<PathEnd> ends(starts.size());
     const std::size_t chunks = (starts.size() + kChunk - 1) / kChunk;
     std::vector<std::uint64_t> chunk_rays(chunks, 0);
-    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+    parallel_for(0, chunks, [&](std::size_t c) {
         for (std::size_t i = c * kChunk; i < std::min(starts.size(), (c + 1) * kChunk); ++i)
             ends[i] = trace(input, starts[i], i, chunk_rays[c]);
     });

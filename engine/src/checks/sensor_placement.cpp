@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 
-#include <tbb/parallel_for.h>
-
 #include "checks/side_hit.h"
 #include "checks/warning_text.h"
+#include "parallel/fork_join.h"
 
 namespace radiant {
 namespace {
@@ -62,7 +61,7 @@ void check_sensor_placement(const CheckedScene& input, std::vector<Warning>& out
         const std::size_t checked = (points.size() + stride - 1) / stride;
         std::vector<Place> places(checked, Place::fine);
         std::vector<std::uint64_t> point_rays(checked, 0);
-        tbb::parallel_for(std::size_t{0}, checked, [&](std::size_t k) {
+        parallel_for(0, checked, [&](std::size_t k) {
             places[k] = place_of(input, bounds, points[k * stride], point_rays[k]);
         });
         for (const std::uint64_t r : point_rays) rays += r;

@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/parallel_for.h>
-
 #include "formfactor/quadrature.h"
 #include "geometry/cosine_direction.h"
 #include "geometry/random.h"
+#include "parallel/fork_join.h"
 
 namespace radiant {
 namespace {
@@ -131,7 +130,7 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
     // own patch. An escape is an opening, which the whole piece sees (a patch that found a back
     // looks no further: its piece's other patches see the opening as well).
     std::vector<HemisphereSurvey> found(patches.size());
-    tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t i) {
+    parallel_for(0, patches.size(), [&](std::size_t i) {
         const int count = piece_patches[static_cast<std::size_t>(patches.patch(i).piece)];
         const int rays = std::max(min_rays_per_patch, (min_rays_per_piece + count - 1) / count);
         found[i] =
@@ -158,7 +157,7 @@ std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& pa
     const int rays = std::max(
         kMinFrontShareRays,
         static_cast<int>(std::min(static_cast<std::size_t>(rays_per_patch), max_rays / open)));
-    tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t i) {
+    parallel_for(0, patches.size(), [&](std::size_t i) {
         if (enclosed[i]) return;
         const HemisphereSurvey s = survey_hemisphere(scene, patches, visibility, triangle_piece,
                                                      seed, i, rays, false, wanted / 2);

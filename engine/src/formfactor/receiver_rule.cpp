@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include <tbb/parallel_for.h>
+#include "parallel/fork_join.h"
 
 namespace radiant {
 namespace {
@@ -93,7 +93,7 @@ std::vector<std::vector<Vec3>> split_in_four(const std::vector<Vec3>& v) {
 std::vector<std::vector<QuadraturePoint>> receiver_rules(const PatchMesh& patches) {
     std::vector<std::vector<QuadraturePoint>> rules(patches.size());
     const SweepOrder sweep(patches);
-    tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t i) {
+    parallel_for(0, patches.size(), [&](std::size_t i) {
         const auto& poly = patches.patch(i).vertices;
         const double ratio = nearness(patches, sweep, i);
         if (ratio < 0.5) {

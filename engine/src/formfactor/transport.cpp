@@ -3,15 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/blocked_range.h>
-#include <tbb/combinable.h>
-#include <tbb/parallel_for.h>
-
 #include "formfactor/luminaire_light.h"
 #include "formfactor/point_polygon.h"
 #include "formfactor/receiver_rule.h"
 #include "formfactor/shadow_rays.h"
 #include "geometry/random.h"
+#include "parallel/fork_join.h"
+#include "parallel/per_thread.h"
 
 namespace radiant {
 namespace {
@@ -111,10 +109,10 @@ void Transport::form_factor_row(std::size_t i, float* row, std::uint64_t& rays,
         }
     };
     if (parallel) {
-        tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const auto& range) {
+        PerThread<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
+        parallel_for_chunks(0, n, 64, [&](std::size_t begin, std::size_t end) {
             std::uint64_t& local = ray_count.local();
-            for (std::size_t j = range.begin(); j != range.end(); ++j) source(j, local);
+            for (std::size_t j = begin; j != end; ++j) source(j, local);
         });
         rays += ray_count.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
     } else {

@@ -5,14 +5,13 @@
 #include <functional>
 #include <numbers>
 
-#include <tbb/combinable.h>
-#include <tbb/parallel_for.h>
-
 #include "formfactor/luminaire_light.h"
 #include "formfactor/point_polygon.h"
 #include "formfactor/quadrature.h"
 #include "formfactor/receiver_rule.h"
 #include "geometry/random.h"
+#include "parallel/fork_join.h"
+#include "parallel/per_thread.h"
 #include "solution/surface_summary.h"
 
 namespace radiant {
@@ -197,9 +196,9 @@ void ElementTree::light_from_luminaires(Element& e, std::uint64_t& rays) const {
 }
 
 std::uint64_t ElementTree::light_from(std::size_t first) {
-    tbb::combinable<std::uint64_t> rays([] { return std::uint64_t{0}; });
-    tbb::parallel_for(first, elements_.size(),
-                      [&](std::size_t i) { light_from_luminaires(elements_[i], rays.local()); });
+    PerThread<std::uint64_t> rays([] { return std::uint64_t{0}; });
+    parallel_for(first, elements_.size(),
+                 [&](std::size_t i) { light_from_luminaires(elements_[i], rays.local()); });
     return rays.combine(std::plus<>());
 }
 
@@ -220,7 +219,7 @@ Rgb ElementTree::emitter_light_at(const Vec3& x, const Vec3& n, int patch) const
 // radiosity strays from its mean where the direct light falls off across it, which the linking
 // oracle needs before the leaf is ever split (see link_refinement).
 void ElementTree::estimate_from(std::size_t first, double ambient_irradiance, int channels) {
-    tbb::parallel_for(first, elements_.size(), [&](std::size_t i) {
+    parallel_for(first, elements_.size(), [&](std::size_t i) {
         Element& e = elements_[i];
         if (e.cluster) return;
         const bool lit = photometric(e.luminaire_irradiance, channels) > 0;

@@ -4,14 +4,13 @@
 #include <cmath>
 #include <numbers>
 
-#include <tbb/combinable.h>
-#include <tbb/parallel_for.h>
-
 #include "formfactor/luminaire_light.h"
 #include "formfactor/point_polygon.h"
 #include "formfactor/quadrature.h"
 #include "formfactor/sampled_views.h"
 #include "formfactor/shadow_rays.h"
+#include "parallel/fork_join.h"
+#include "parallel/per_thread.h"
 #include "radiant/box.h"
 #include "solution/sensors.h"
 #include "solution/surface_summary.h"
@@ -123,11 +122,11 @@ std::vector<SensorResult> gather_sensors_from_tree(const PreparedScene& scene,
                                                    std::uint64_t& rays) {
     const PointGather gather(tree, visibility, criteria, channels);
     std::vector<SensorResult> out;
-    tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
+    PerThread<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
     for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
         const PreparedSensorSet& set = scene.sensors[s];
         SensorResult r = sensor_result_for(set, scene.world_origin);
-        tbb::parallel_for(std::size_t{0}, set.points.size(), [&](std::size_t i) {
+        parallel_for(0, set.points.size(), [&](std::size_t i) {
             std::uint64_t& local = ray_count.local();
             const Vec3& x = set.points[i];
             Rgb h = luminaire_irradiance_at(scene, visibility, x, set.normal, local);

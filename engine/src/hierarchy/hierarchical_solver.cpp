@@ -5,9 +5,8 @@
 #include <limits>
 #include <numeric>
 
-#include <tbb/parallel_for.h>
-
 #include "hierarchy/progressive_shooting.h"
+#include "parallel/fork_join.h"
 
 namespace radiant {
 namespace {
@@ -282,7 +281,7 @@ Rgb HierarchicalSystem::outside_irradiance(const Element& leaf, std::size_t inde
 }
 
 void HierarchicalSystem::gather() {
-    tbb::parallel_for(std::size_t{0}, tree_.size(), [&](std::size_t e) {
+    parallel_for(0, tree_.size(), [&](std::size_t e) {
         Rgb g{0, 0, 0};
         for (std::size_t k = first_link_[e]; k < first_link_[e + 1]; ++k) {
             const Link& l = links_[k];

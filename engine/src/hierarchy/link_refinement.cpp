@@ -5,14 +5,13 @@
 #include <cmath>
 #include <numbers>
 
-#include <tbb/combinable.h>
-#include <tbb/parallel_for.h>
-
 #include "formfactor/area_average.h"
 #include "formfactor/point_polygon.h"
 #include "formfactor/quadrature.h"
 #include "formfactor/shadow_rays.h"
 #include "geometry/random.h"
+#include "parallel/fork_join.h"
+#include "parallel/per_thread.h"
 #include "radiant/box.h"
 #include "solution/surface_summary.h"
 
@@ -362,7 +361,7 @@ private:
 // extrapolated (kShareExtrapolation), kept where it differs from the child's share of the area by
 // more than the rounding of 255ths.
 void share_sources(std::vector<Link>& links, const ElementTree& tree) {
-    tbb::parallel_for(std::size_t{0}, links.size(), [&](std::size_t i) {
+    parallel_for(0, links.size(), [&](std::size_t i) {
         Link& l = links[i];
         const Element& s = tree[static_cast<std::size_t>(l.source)];
         if (s.cluster || s.leaf() || s.children.size() > l.child_share.size()) return;
@@ -461,7 +460,7 @@ void resume_links(RefinementOutcome& out, ElementTree& tree, const Visibility& v
             }
         }
         std::vector<Verdict> verdicts(std::min(pairs.size(), kPairsPerSlice));
-        tbb::combinable<std::uint64_t> rays([] { return std::uint64_t{0}; });
+        PerThread<std::uint64_t> rays([] { return std::uint64_t{0}; });
         auto count_rays = [&] {
             out.rays += rays.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
             rays.clear();
@@ -514,7 +513,7 @@ void resume_links(RefinementOutcome& out, ElementTree& tree, const Visibility& v
             // so, and the pairs not judged by then are dropped, like those still pending between
             // rounds.
             std::atomic<bool> interrupted{false};
-            tbb::parallel_for(begin, end, [&](std::size_t i) {
+            parallel_for(begin, end, [&](std::size_t i) {
                 if (pairs[i].receiver == pairs[i].source) return;  // opened next round
                 if (interrupted.load(std::memory_order_relaxed)) return;
                 if (criteria.should_stop && criteria.should_stop()) {
@@ -540,7 +539,7 @@ void resume_links(RefinementOutcome& out, ElementTree& tree, const Visibility& v
                 }
             }
             if (!rejudge.empty()) {
-                tbb::parallel_for(std::size_t{0}, rejudge.size(), [&](std::size_t k) {
+                parallel_for(0, rejudge.size(), [&](std::size_t k) {
                     verdict(rejudge[k]) = oracle.judge(pairs[rejudge[k]], false, rays.local());
                 });
                 const std::vector<std::size_t> unsplit = std::move(rejudge);

@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/combinable.h>
-#include <tbb/parallel_for.h>
-
 #include "geometry/cosine_direction.h"
 #include "geometry/random.h"
 #include "hierarchy/root_patch_locator.h"
+#include "parallel/fork_join.h"
+#include "parallel/per_thread.h"
 #include "solution/surface_summary.h"
 
 namespace radiant {
@@ -106,13 +105,13 @@ ImportanceEstimate estimate_sensor_importance(const PreparedScene& scene, const 
     const std::size_t per_point =
         std::max<std::size_t>(1, (walks + points.size() - 1) / points.size());
     const Walker walker(scene, roots, tree, visibility, triangle_piece);
-    tbb::combinable<std::vector<std::uint64_t>> visits(
+    PerThread<std::vector<std::uint64_t>> visits(
         [root_patches] { return std::vector<std::uint64_t>(root_patches, 0); });
-    tbb::combinable<std::vector<int>> stacks;
-    tbb::combinable<std::uint64_t> rays([] { return std::uint64_t{0}; });
+    PerThread<std::vector<int>> stacks;
+    PerThread<std::uint64_t> rays([] { return std::uint64_t{0}; });
     // A cancel or deadline stops the walks between points; linking, which comes next, then stops
     // too, so the partial counts are never used for a result.
-    tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t i) {
+    parallel_for(0, points.size(), [&](std::size_t i) {
         if (should_stop && should_stop()) return;
         std::vector<std::uint64_t>& local = visits.local();
         std::vector<int>& stack = stacks.local();

@@ -2,9 +2,8 @@
 
 #include <algorithm>
 
-#include <tbb/parallel_for.h>
-
 #include "geometry/cosine_direction.h"
+#include "parallel/fork_join.h"
 #include "solution/surface_summary.h"
 
 namespace radiant {
@@ -91,7 +90,7 @@ std::uint64_t PhotonField::trace(std::size_t photons, const LightSources& source
     const int channels = scene_.channels;
     while (remaining > 0 && !stop()) {
         const std::size_t wave = std::min(remaining, kWaveChunks);
-        tbb::parallel_for(std::size_t{0}, wave, [&](std::size_t k) {
+        parallel_for(0, wave, [&](std::size_t k) {
             deposits[k].clear();
             wave_rays[k] = 0;
             trace_chunk(chunks_ + k, sources, visibility, deposits[k], wave_rays[k]);

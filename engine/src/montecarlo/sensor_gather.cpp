@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <array>
 
-#include <tbb/parallel_for.h>
-
 #include "geometry/cosine_direction.h"
+#include "parallel/fork_join.h"
 #include "solution/surface_summary.h"
 
 namespace radiant {
@@ -116,7 +115,7 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
 
 std::uint64_t SensorGather::gather(int sets, const std::function<bool()>& stop) {
     std::vector<std::uint64_t> rays(points_.size(), 0);
-    tbb::parallel_for(std::size_t{0}, points_.size(), [&](std::size_t i) {
+    parallel_for(0, points_.size(), [&](std::size_t i) {
         if (!stop()) gather_point(i, points_[i], sets, rays[i]);
     });
     sets_ = sets;
@@ -131,7 +130,7 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
     const std::vector<ElementSide>& sides = mesh_.sides();
     // The reflected indirect light of every side: ρ ⊙ H_ind, photometric.
     std::vector<double> reflected(sides.size());
-    tbb::parallel_for(std::size_t{0}, sides.size(), [&](std::size_t s) {
+    parallel_for(0, sides.size(), [&](std::size_t s) {
         const MeshElement& e = mesh_[static_cast<std::size_t>(sides[s].element)];
         const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
         const Rgb h = field.indirect(static_cast<int>(s));
@@ -146,7 +145,7 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
         return s.back ? o.back : o.front;
     };
     std::vector<GatheredPoint> out(points_.size());
-    tbb::parallel_for(std::size_t{0}, points_.size(), [&](std::size_t i) {
+    parallel_for(0, points_.size(), [&](std::size_t i) {
         const Point& p = points_[i];
         const int sets = sets_;
         GatheredPoint& g = out[i];

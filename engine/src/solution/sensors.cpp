@@ -2,9 +2,8 @@
 
 #include <algorithm>
 
-#include <tbb/combinable.h>
-#include <tbb/parallel_for.h>
-
+#include "parallel/fork_join.h"
+#include "parallel/per_thread.h"
 #include "solution/surface_summary.h"
 
 namespace radiant {
@@ -37,12 +36,12 @@ std::vector<SensorResult> gather_sensors(const PreparedScene& scene, const Trans
                                          const std::array<std::vector<double>, 3>& radiosity,
                                          int channels, double noise_share, std::uint64_t& rays) {
     std::vector<SensorResult> results;
-    tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
+    PerThread<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
     const std::size_t n = transport.patches().size();
     for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
         const PreparedSensorSet& set = scene.sensors[s];
         SensorResult r = sensor_result_for(set, scene.world_origin);
-        tbb::parallel_for(std::size_t{0}, set.points.size(), [&](std::size_t k) {
+        parallel_for(0, set.points.size(), [&](std::size_t k) {
             std::uint64_t& local_rays = ray_count.local();
             const Vec3& x = set.points[k];
             const std::uint64_t key = (static_cast<std::uint64_t>(s) << 40) ^ (k << 1) ^ 1u;

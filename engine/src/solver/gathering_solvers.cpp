@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/parallel_for.h>
+#include "parallel/fork_join.h"
 
 namespace radiant {
 namespace {
@@ -62,7 +62,7 @@ SolverOutcome JacobiSolver::solve(const LinearSystem& s, const SolverControl& co
     return iterate(s, control, [&](std::size_t c, std::vector<double>& b) {
         const auto& rho = s.reflectance[c];
         const auto& src = s.source[c];
-        tbb::parallel_for(std::size_t{0}, s.n, [&](std::size_t i) {
+        parallel_for(0, s.n, [&](std::size_t i) {
             double g = 0;
             for (std::size_t j = 0; j < s.n; ++j) g += s.f(i, j) * b[j];
             next[i] = src[i] + rho[i] * g;

@@ -5,9 +5,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include <tbb/combinable.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include "checks/modelling_checks.h"
@@ -15,6 +12,8 @@
 #include "formfactor/enclosure.h"
 #include "formfactor/transport.h"
 #include "meshing/patch_mesh.h"
+#include "parallel/fork_join.h"
+#include "parallel/per_thread.h"
 #include "solution/gouraud.h"
 #include "solution/result_difference.h"
 #include "solution/sensors.h"
@@ -337,7 +336,7 @@ void Pipeline::finish_stats(Result& result, const std::string& method, std::size
     st.error_estimate = error_estimate;
     st.error_parts.residual = error_estimate;  // the linear system's; checks add their parts
     st.channels = channels;
-    st.threads = tbb::this_task_arena::max_concurrency();
+    st.threads = arena_threads();
     st.seconds = elapsed();
     result.status = stopped ? SolveStatus::stopped : SolveStatus::converged;
 }
@@ -576,9 +575,9 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     report("form factors", 0.05);
     std::vector<float> form_factors(matrix_free ? 0 : n * n, 0.0f);
     std::vector<Rgb> luminaire_irradiance(n, Rgb{0, 0, 0});
-    tbb::combinable<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
+    PerThread<std::uint64_t> ray_count([] { return std::uint64_t{0}; });
     std::atomic<bool> interrupted{false};
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    parallel_for(0, n, [&](std::size_t i) {
         if (interrupted.load(std::memory_order_relaxed)) return;
         if (should_stop()) {
             interrupted = true;
@@ -660,7 +659,7 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     for (int c = 0; c < channels; ++c) {
         const auto ci = static_cast<std::size_t>(c);
         const std::vector<double>& b = outcome.radiosity[ci];
-        tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        parallel_for(0, n, [&](std::size_t i) {
             double g = 0;
             if (matrix_free) {
                 g = gathered[ci].empty() ? 0.0 : gathered[ci][i];

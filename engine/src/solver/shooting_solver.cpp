@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/parallel_for.h>
-
 #include "formfactor/transport.h"
+#include "parallel/fork_join.h"
 
 namespace radiant {
 
@@ -140,7 +139,7 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
     const std::size_t n = s.n;
     // Columns of F are what a shooter distributes: transpose once for contiguous access.
     std::vector<float> ft(n * n);
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t j) {
+    parallel_for(0, n, [&](std::size_t j) {
         for (std::size_t i = 0; i < n; ++i) ft[j * n + i] = s.f(i, j);
     });
     // Row sums weigh the ambient term of snapshots, so only a solve that publishes them needs
@@ -148,7 +147,7 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
     std::vector<double> row_sum;
     if (control.snapshot) {
         row_sum.assign(n, 0.0);
-        tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        parallel_for(0, n, [&](std::size_t i) {
             for (std::size_t j = 0; j < n; ++j) row_sum[i] += s.f(i, j);
         });
     }
@@ -183,7 +182,7 @@ SolverOutcome shoot_matrix_free(const LinearSystem& s, const Transport& transpor
     auto shooter_column = [&](std::size_t shooter) {
         transport.form_factor_row(shooter, row.data(), rays, true);
         const double a = s.area_m2[shooter];
-        tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        parallel_for(0, n, [&](std::size_t i) {
             column[i] = s.area_m2[i] > 0 ? static_cast<float>(row[i] * a / s.area_m2[i]) : 0.0f;
         });
         factors += static_cast<std::uint64_t>(

@@ -6,9 +6,8 @@
 
 #include <unistd.h>
 
-#include <tbb/task_arena.h>
-
 #include "checks/solve_outcome.h"
+#include "parallel/fork_join.h"
 #include "solver/pipeline.h"
 
 namespace radiant {
@@ -47,8 +46,8 @@ Result solve(const Scene& scene, const SolveOptions& options, SolveObserver* obs
             result.error = "unknown method \"" + options.method + "\"";
             return result;
         }
-        tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-        arena.execute([&] { result = Pipeline(scene, options, observer, cancel).run(); });
+        run_with_threads(options.threads,
+                         [&] { result = Pipeline(scene, options, observer, cancel).run(); });
         check_solve_outcome(result, options, cancel && cancel->cancelled(), result.warnings);
         if (options.strict && !result.warnings.empty() && result.status != SolveStatus::failed) {
             result.status = SolveStatus::failed;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "parallel/fork_join.h"
 #include "visibility/visibility.h"
 
 namespace radiant {
@@ -166,7 +167,7 @@ EmbreeVisibility::EmbreeVisibility(std::span<const Triangle> triangles)
         rtcReleaseGeometry(geom);  // the scene holds its own reference
     }
     // One commit; after it the scene is read-only and safe for concurrent queries.
-    rtcCommitScene(scene_.get());
+    run_library_parallel_work([&] { rtcCommitScene(scene_.get()); });
     throw_if_error("scene build");
 }
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <atomic>
 
-#include <tbb/parallel_for.h>
+#include "parallel/fork_join.h"
 
 namespace radiant {
 namespace {
@@ -41,9 +41,8 @@ std::vector<int> potential_occluders(const PreparedScene& scene, double eps) {
     const std::vector<Vec3> points = everything_placed(scene);
     const std::size_t k = scene.pieces.size();
     std::vector<char> occludes(k, 0);
-    tbb::parallel_for(std::size_t{0}, k, [&](std::size_t q) {
-        occludes[q] = may_occlude(scene.pieces[q], points, eps);
-    });
+    parallel_for(0, k,
+                 [&](std::size_t q) { occludes[q] = may_occlude(scene.pieces[q], points, eps); });
     std::vector<int> out;
     for (std::size_t q = 0; q < k; ++q) {
         if (occludes[q]) out.push_back(static_cast<int>(q));
@@ -57,7 +56,7 @@ bool nothing_can_occlude(const PreparedScene& scene) {
     const std::vector<Vec3> points = everything_placed(scene);
     const double eps = culling_epsilon(scene);
     std::atomic<bool> found{false};
-    tbb::parallel_for(std::size_t{0}, scene.pieces.size(), [&](std::size_t q) {
+    parallel_for(0, scene.pieces.size(), [&](std::size_t q) {
         if (!found.load(std::memory_order_relaxed) && may_occlude(scene.pieces[q], points, eps))
             found = true;
     });
@@ -78,7 +77,7 @@ OcclusionCulling::OcclusionCulling(const PreparedScene& scene, std::size_t max_t
     auto facing = [&](const Piece& p) {
         return scene.materials[static_cast<std::size_t>(p.material)].two_sided ? Vec3{} : p.normal;
     };
-    tbb::parallel_for(std::size_t{0}, k, [&](std::size_t a) {
+    parallel_for(0, k, [&](std::size_t a) {
         const Piece& pa = scene.pieces[a];
         for (std::size_t b = 0; b < k; ++b) {
             if (a == b) continue;
