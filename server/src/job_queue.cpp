@@ -128,6 +128,8 @@ struct JobQueue::LiveJob final : SolveObserver {
     /// written; writer thread only.
     std::uint64_t stored_snapshot_event_id = 0, stored_values_event_id = 0;
     std::chrono::steady_clock::time_point snapshot_stored_at;
+    /// The scene text a claim from a shared store brought, for run() (which clears it).
+    std::string claimed_scene_json;
 };
 
 JobQueue::JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options)
@@ -482,8 +484,11 @@ std::shared_ptr<JobQueue::LiveJob> JobQueue::claim_job() {
         }
         std::unique_lock lock(mutex_);
         if (claimed) {
-            claimed->scene_json.clear();  // run() reads it when it needs it
+            // Running here once run() has its scene name, as a job from the in-memory queue.
+            std::string scene_json = std::exchange(claimed->scene_json, std::string());
+            claimed->status = JobStatus::queued;
             auto job = std::make_shared<LiveJob>(std::move(*claimed));
+            job->claimed_scene_json = std::move(scene_json);
             live_.emplace(job->id, job);
             if (stopping_) job->token.cancel();  // run() hands it back at once
             spdlog::info("job {} claimed by {}", job->id, replica_);
@@ -512,11 +517,15 @@ void JobQueue::work() {
 
 void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     const std::string& id = job->id;
-    const std::optional<JobRecord> stored = store_.find(id);
-    if (!stored) return;
+    std::string scene_json = std::move(job->claimed_scene_json);
+    if (scene_json.empty()) {
+        std::optional<JobRecord> stored = store_.find(id);
+        if (!stored) return;
+        scene_json = std::move(stored->scene_json);
+    }
     // The scene was checked on submission; parsing again keeps restarts on the same path. The
     // job turns running together with its scene name, so a running job always has one.
-    const proto::ParseOutcome outcome = proto::parse_scene(stored->scene_json);
+    const proto::ParseOutcome outcome = proto::parse_scene(scene_json);
     {
         const std::lock_guard lock(job->mutex);
         if (outcome.ok()) job->scene = {outcome.scene->name, outcome.scene->settings.digits};
