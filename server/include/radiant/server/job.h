@@ -63,4 +63,8 @@ nlohmann::json job_to_json(const JobRecord& job);
 /// A fresh random 128-bit id in hex. Thread-safe.
 std::string new_job_id();
 
+/// Whether `text` has the form of new_job_id()'s ids: anything else names no job, and never
+/// reaches a store (PostgreSQL refuses text that is not UTF-8 outright).
+bool is_job_id(std::string_view text);
+
 }  // namespace radiant::server
