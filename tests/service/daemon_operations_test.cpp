@@ -25,6 +25,7 @@ using boost::beast::http::verb;
 using nlohmann::json;
 using radiant::test::Daemon;
 using radiant::test::http_call;
+using radiant::test::shared_postgres;
 
 class DaemonOperationsTest : public radiant::test::StoreDaemonFixture {};
 INSTANTIATE_TEST_SUITE_P(Stores, DaemonOperationsTest, radiant::test::both_stores(),
@@ -132,7 +133,7 @@ TEST_P(DaemonOperationsTest, AJobThatKilledItsDaemonTwiceFails) {
     EXPECT_NE(j.value("error", "").find("died"), std::string::npos) << j.dump();
 }
 
-TEST_P(DaemonOperationsTest, AFullStoreFailsJobsVisiblyAndHealthSaysSo) {
+TEST_P(DaemonOperationsTest, AFullStoreFailsJobsVisiblyAndReadinessSaysSo) {
     if (postgresql()) GTEST_SKIP() << "--max-store-mb caps the SQLite store only";
     Daemon d(data(), flags({"--max-store-mb", "1", "--queue-limit", "1000"}), log());
     const std::string running = post(d, radiant::test::slow_room(2));
@@ -157,14 +158,34 @@ TEST_P(DaemonOperationsTest, AFullStoreFailsJobsVisiblyAndHealthSaysSo) {
     const json j = wait_for(d, running, "failed", 20);
     EXPECT_EQ(j["status"], "failed") << j.dump();
     EXPECT_NE(j.value("error", "").find("store"), std::string::npos) << j.dump();
-    const auto health = http_call(d.port(), verb::get, "/healthz");
-    EXPECT_EQ(health.status, 503u);
-    EXPECT_EQ(json::parse(health.body)["status"], "store_unwritable") << health.body;
-    EXPECT_NE(json::parse(health.body).value("reason", "").find("full"), std::string::npos)
-        << health.body;
+    // Not ready, saying why; alive all the same (a restart would not make room).
     const auto ready = http_call(d.port(), verb::get, "/readyz");
     EXPECT_EQ(ready.status, 503u);
     EXPECT_EQ(json::parse(ready.body)["error"]["code"], "store_unwritable") << ready.body;
+    EXPECT_NE(json::parse(ready.body)["error"].value("message", "").find("full"), std::string::npos)
+        << ready.body;
+    EXPECT_EQ(http_call(d.port(), verb::get, "/healthz").status, 200u);
+}
+
+TEST_P(DaemonOperationsTest, AStoreThatIsDownFailsReadinessNotLiveness) {
+    if (!postgresql())
+        GTEST_SKIP() << "an SQLite store is a file: the full store above is its case";
+    Daemon d(data(), flags(), log());
+    const std::string& db = store_->database();
+    // The database refuses connections and drops the daemon's: the store is down.
+    shared_postgres().execute("postgres", "ALTER DATABASE " + db + " ALLOW_CONNECTIONS false");
+    shared_postgres().execute("postgres",
+                              "SELECT pg_terminate_backend(pid) FROM pg_stat_activity"
+                              " WHERE datname = '" +
+                                  db + "'");
+    const auto ready = http_call(d.port(), verb::get, "/readyz");
+    EXPECT_EQ(ready.status, 503u) << ready.body;
+    EXPECT_EQ(json::parse(ready.body)["error"]["code"], "store_unwritable") << ready.body;
+    const auto health = http_call(d.port(), verb::get, "/healthz");
+    EXPECT_EQ(health.status, 200u) << health.body;
+    // Back: ready again, without a restart.
+    shared_postgres().execute("postgres", "ALTER DATABASE " + db + " ALLOW_CONNECTIONS true");
+    EXPECT_EQ(http_call(d.port(), verb::get, "/readyz").status, 200u);
 }
 
 TEST_P(DaemonOperationsTest, OutOfDescriptorsAcceptPausesAndRecovers) {
