@@ -177,7 +177,7 @@ SubmitOutcome JobQueue::submit(const std::string& scene_json, const std::string&
     const std::size_t shared_waiting = store_.shared() ? queue_length() : 0;
     const std::lock_guard lock(mutex_);
     const std::size_t waiting = store_.shared() ? shared_waiting : queue_.size();
-    if (stopping_) return {SubmitOutcome::Kind::shutting_down, {}, {}};
+    if (draining_ || stopping_) return {SubmitOutcome::Kind::shutting_down, {}, {}};
     if (waiting >= options_.queue_limit) return {SubmitOutcome::Kind::queue_full, {}, {}};
     JobRecord record;
     record.id = new_job_id();
@@ -350,7 +350,22 @@ std::size_t JobQueue::queue_length() const {
 
 bool JobQueue::shutting_down() const {
     const std::lock_guard lock(mutex_);
-    return stopping_;
+    return draining_ || stopping_;
+}
+
+void JobQueue::drain(std::chrono::milliseconds deadline) {
+    {
+        std::unique_lock lock(mutex_);
+        draining_ = true;
+        wake_.notify_all();  // idle workers stop waiting for a job
+        const std::size_t running = solving_;
+        if (running > 0) spdlog::info("draining: {} running job(s) may finish", running);
+        // Leases are still renewed meanwhile: the progress writer runs until shutdown().
+        if (!solved_.wait_for(lock, deadline, [this] { return solving_ == 0 || stopping_; })) {
+            spdlog::info("drain deadline: the running job(s) go back to the queue");
+        }
+    }
+    shutdown();
 }
 
 void JobQueue::shutdown() {
@@ -358,13 +373,13 @@ void JobQueue::shutdown() {
     {
         const std::lock_guard lock(mutex_);
         stopping_ = true;
-        // Queued jobs stay queued in the store; running ones stop and stay "running" there, so
-        // the next process runs both again.
+        // Queued jobs stay queued in the store; running ones stop and run() hands them back.
         for (auto& [id, job] : live_) job->token.cancel();
         workers.swap(workers_);
     }
     wake_.notify_all();
     progress_wake_.notify_all();
+    solved_.notify_all();
     for (std::thread& t : workers) t.join();
 }
 
@@ -463,10 +478,11 @@ void JobQueue::renew_leases() {
 std::shared_ptr<JobQueue::LiveJob> JobQueue::next_job() {
     if (store_.shared()) return claim_job();
     std::unique_lock lock(mutex_);
-    wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
-    if (stopping_) return nullptr;
+    wake_.wait(lock, [this] { return draining_ || stopping_ || !queue_.empty(); });
+    if (draining_ || stopping_) return nullptr;
     std::shared_ptr<LiveJob> job = queue_.front();
     queue_.pop_front();
+    ++solving_;
     return job;
 }
 
@@ -474,7 +490,7 @@ std::shared_ptr<JobQueue::LiveJob> JobQueue::claim_job() {
     for (;;) {
         {
             const std::lock_guard lock(mutex_);
-            if (stopping_) return nullptr;
+            if (draining_ || stopping_) return nullptr;
         }
         std::optional<JobRecord> claimed;
         try {
@@ -490,7 +506,9 @@ std::shared_ptr<JobQueue::LiveJob> JobQueue::claim_job() {
             auto job = std::make_shared<LiveJob>(std::move(*claimed));
             job->claimed_scene_json = std::move(scene_json);
             live_.emplace(job->id, job);
-            if (stopping_) job->token.cancel();  // run() hands it back at once
+            ++solving_;
+            // Claimed as a drain began: run() hands it back at once.
+            if (draining_ || stopping_) job->token.cancel();
             spdlog::info("job {} claimed by {}", job->id, replica_);
             return job;
         }
@@ -512,6 +530,8 @@ void JobQueue::work() {
         }
         const std::lock_guard lock(mutex_);
         live_.erase(job->id);
+        --solving_;
+        solved_.notify_all();
     }
 }
 
@@ -573,7 +593,7 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
         } catch (const StoreError& e) {
             spdlog::warn("job {}: attempt not released: {}", id, e.what());
         }
-        spdlog::info("job {} interrupted by shutdown; it runs again after restart", id);
+        spdlog::info("job {} interrupted by shutdown: handed back to the queue", id);
         return;
     }
 

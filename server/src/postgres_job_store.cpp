@@ -310,9 +310,15 @@ void PostgresJobStore::mark_running(const std::string& id, UnixMillis started) {
 
 void PostgresJobStore::release(const std::string& id) {
     const std::lock_guard lock(mutex_);
-    run("UPDATE jobs SET status = 'queued', started = 0, attempts = GREATEST(attempts - 1, 0),"
-        " lease_owner = '', lease_expires = 0 WHERE id = $1 AND status = 'running'",
-        {id});
+    // Another replica takes the job at once: its run's event ids continue above any this one
+    // sent, as after a lease that expired; the stopped run's snapshot is no longer news.
+    transaction([&] {
+        run("UPDATE jobs SET status = 'queued', started = 0, attempts = GREATEST(attempts - 1, 0),"
+            " lease_owner = '', lease_expires = 0, progress = " +
+                bumped_sequence("progress") + " WHERE id = $1 AND status = 'running'",
+            {id});
+        run("DELETE FROM snapshots WHERE job_id = $1", {id});
+    });
 }
 
 void PostgresJobStore::request_cancel(const std::string& id) {

@@ -25,7 +25,6 @@ using boost::beast::http::verb;
 using nlohmann::json;
 using radiant::test::Daemon;
 using radiant::test::http_call;
-using radiant::test::shared_postgres;
 
 class DaemonOperationsTest : public radiant::test::StoreDaemonFixture {};
 INSTANTIATE_TEST_SUITE_P(Stores, DaemonOperationsTest, radiant::test::both_stores(),
@@ -115,13 +114,7 @@ TEST_P(DaemonOperationsTest, AJobThatKilledItsDaemonTwiceFails) {
         // once it started it again.
         Daemon d(data(), flags(), log());
         if (id.empty()) id = post(d, radiant::test::slow_room());
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-        json j = job(d, id);
-        while ((j["status"] != "running" || j["started"] == started) &&
-               std::chrono::steady_clock::now() < deadline) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-            j = job(d, id);
-        }
+        const json j = wait_for_new_run(d, id, started);
         ASSERT_EQ(j["status"], "running");
         ASSERT_NE(j["started"], started) << "attempt " << attempt << " did not start";
         started = j["started"];
@@ -165,27 +158,6 @@ TEST_P(DaemonOperationsTest, AFullStoreFailsJobsVisiblyAndReadinessSaysSo) {
     EXPECT_NE(json::parse(ready.body)["error"].value("message", "").find("full"), std::string::npos)
         << ready.body;
     EXPECT_EQ(http_call(d.port(), verb::get, "/healthz").status, 200u);
-}
-
-TEST_P(DaemonOperationsTest, AStoreThatIsDownFailsReadinessNotLiveness) {
-    if (!postgresql())
-        GTEST_SKIP() << "an SQLite store is a file: the full store above is its case";
-    Daemon d(data(), flags(), log());
-    const std::string& db = store_->database();
-    // The database refuses connections and drops the daemon's: the store is down.
-    shared_postgres().execute("postgres", "ALTER DATABASE " + db + " ALLOW_CONNECTIONS false");
-    shared_postgres().execute("postgres",
-                              "SELECT pg_terminate_backend(pid) FROM pg_stat_activity"
-                              " WHERE datname = '" +
-                                  db + "'");
-    const auto ready = http_call(d.port(), verb::get, "/readyz");
-    EXPECT_EQ(ready.status, 503u) << ready.body;
-    EXPECT_EQ(json::parse(ready.body)["error"]["code"], "store_unwritable") << ready.body;
-    const auto health = http_call(d.port(), verb::get, "/healthz");
-    EXPECT_EQ(health.status, 200u) << health.body;
-    // Back: ready again, without a restart.
-    shared_postgres().execute("postgres", "ALTER DATABASE " + db + " ALLOW_CONNECTIONS true");
-    EXPECT_EQ(http_call(d.port(), verb::get, "/readyz").status, 200u);
 }
 
 TEST_P(DaemonOperationsTest, OutOfDescriptorsAcceptPausesAndRecovers) {

@@ -116,11 +116,50 @@ TEST_P(DaemonTest, KillNineLosesNoAcceptedJob) {
     EXPECT_EQ(wait_for(d, slow, "done")["status"], "done");  // ran again, up to its 1 s limit
 }
 
-TEST_P(DaemonTest, SigtermStopsCleanly) {
-    Daemon d(data(), flags(), log());
-    const std::string slow = post(d, radiant::test::slow_room());
-    ASSERT_EQ(wait_for(d, slow, "running")["status"], "running");
-    EXPECT_EQ(d.stop(SIGTERM), 0);
+TEST_P(DaemonTest, SigtermLetsTheRunningJobFinishWithinTheDrain) {
+    std::string id, queued;
+    {
+        Daemon d(data(), flags(), log());
+        id = post(d, radiant::test::slow_room(2));  // ends at its 2 s limit, done
+        ASSERT_EQ(wait_for(d, id, "running")["status"], "running");
+        queued = post(d, radiant::test::tiny_room());
+        EXPECT_EQ(d.stop(SIGTERM), 0);
+    }
+    // The drained daemon stored the result; the job that waited was not started.
+    const fs::path check_log = dir_ / "check.log";
+    Daemon d(data(), flags(), check_log);
+    const json j = job(d, id);
+    EXPECT_EQ(j["status"], "done") << j.dump();
+    EXPECT_EQ(http_call(d.port(), verb::get, "/v1/jobs/" + id + "/result").status, 200u);
+    EXPECT_EQ(wait_for(d, queued, "done")["status"], "done");
+    EXPECT_NE(radiant::test::read_text(log()).find("draining: 1 running job(s) may finish"),
+              std::string::npos);
+}
+
+TEST_P(DaemonTest, SigtermPastTheDrainDeadlineHandsTheJobBack) {
+    std::string id;
+    {
+        Daemon d(data(), flags({"--drain-seconds", "0.5"}), log());
+        id = post(d, radiant::test::slow_room());
+        ASSERT_EQ(wait_for(d, id, "running")["status"], "running");
+        EXPECT_EQ(d.stop(SIGTERM), 0);
+    }
+    EXPECT_NE(radiant::test::read_text(log()).find("handed back to the queue"), std::string::npos);
+    // Queued again, its attempt not counted: after a restart it runs, and after a kill of that
+    // run it still runs again, where a counted hand-back would have spent both attempts.
+    json started;
+    for (int run = 0; run < 2; ++run) {
+        Daemon d(data(), flags(), log());
+        const json j = wait_for_new_run(d, id, started);
+        ASSERT_EQ(j["status"], "running") << "run " << run << ": " << j.dump();
+        started = j["started"];
+        if (run == 0) {
+            d.stop(SIGKILL);
+        } else {
+            EXPECT_EQ(http_call(d.port(), verb::delete_, "/v1/jobs/" + id).status, 202u);
+            EXPECT_EQ(wait_for(d, id, "cancelled")["status"], "cancelled");
+        }
+    }
 }
 
 }  // namespace

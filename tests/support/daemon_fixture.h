@@ -62,6 +62,21 @@ protected:
         } while (std::chrono::steady_clock::now() < deadline);
         return j;
     }
+    /// The job once it is running in a run that started after `started` (a job's "started"
+    /// field; null: any run), or as it is after `seconds`. A daemon killed on a shared store
+    /// leaves its job "running" until the lease ends: only a new start shows it runs again.
+    static nlohmann::json wait_for_new_run(const Daemon& d, const std::string& id,
+                                           const nlohmann::json& started, double seconds = 20) {
+        const auto deadline =
+            std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        nlohmann::json j;
+        do {
+            j = job(d, id);
+            if (j["status"] == "running" && j["started"] != started) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        } while (std::chrono::steady_clock::now() < deadline);
+        return j;
+    }
 
     std::filesystem::path dir_;
 };

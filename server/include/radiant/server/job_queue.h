@@ -95,8 +95,15 @@ public:
     std::size_t queue_length() const;
     bool shutting_down() const;
 
-    /// Refuses new jobs, stops running solves without recording them as finished (so the next
-    /// process runs them again) and joins the workers. Idempotent.
+    /// A graceful stop (SIGTERM): refuses new jobs and takes no more from the queue, lets the
+    /// running solves go on for up to `deadline`, then shutdown() hands back those still running.
+    /// Returns once the workers are joined. Thread-safe; another thread may call shutdown()
+    /// meanwhile to cut the wait short.
+    void drain(std::chrono::milliseconds deadline);
+
+    /// Refuses new jobs, stops running solves and hands them back without counting the attempt
+    /// (queued again: on a shared store another process takes them at once, else the next
+    /// process runs them) and joins the workers. Idempotent.
     void shutdown();
 
 private:
@@ -135,7 +142,11 @@ private:
     mutable std::mutex mutex_;
     std::condition_variable wake_;           ///< workers: a job was queued, or shutdown
     std::condition_variable progress_wake_;  ///< the progress writer: shutdown
-    bool stopping_ = false;
+    std::condition_variable solved_;         ///< drain(): a solve ended, or shutdown
+    /// drain() began: no new job is accepted or started; running ones go on.
+    bool draining_ = false;
+    bool stopping_ = false;    ///< shutdown() began: running solves stop too
+    std::size_t solving_ = 0;  ///< workers inside run()
     std::deque<std::shared_ptr<LiveJob>> queue_;
     std::unordered_map<std::string, std::shared_ptr<LiveJob>> live_;  ///< queued or running
     /// Finished jobs whose final state the store refused (disk full); without their results.
