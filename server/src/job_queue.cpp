@@ -67,7 +67,10 @@ JobProgress job_progress(const Progress& p, std::uint64_t sequence) {
 /// reverse.
 struct JobQueue::LiveJob final : SolveObserver {
     explicit LiveJob(JobRecord r)
-        : id(r.id), record(std::move(r)), last_event_id(record.progress.sequence) {}
+        : id(r.id),
+          lease(r.lease_token),
+          record(std::move(r)),
+          last_event_id(record.progress.sequence) {}
 
     void on_progress(const Progress& p) noexcept override {
         const std::lock_guard lock(mutex);
@@ -113,6 +116,9 @@ struct JobQueue::LiveJob final : SolveObserver {
     }
 
     const std::string id;
+    /// The claim this run holds on a shared store: its writes carry it, and the store refuses
+    /// them once another claim took the job (kUnfenced from the in-memory queue).
+    const LeaseToken lease;
     CancellationToken token;
     std::atomic<bool> user_cancelled{false};  ///< false + token cancelled: shutdown
     /// The shared store gave the job to another process: this run stores nothing.
@@ -386,7 +392,7 @@ void JobQueue::shutdown() {
 void JobQueue::write_progress() {
     std::unique_lock lock(mutex_);
     while (!progress_wake_.wait_for(lock, kProgressWritePeriod, [this] { return stopping_; })) {
-        std::vector<std::pair<std::string, JobProgress>> changed;
+        std::vector<std::pair<std::shared_ptr<LiveJob>, JobProgress>> changed;
         std::vector<std::pair<std::shared_ptr<LiveJob>, std::shared_ptr<const JobSnapshot>>>
             snapshots;
         const auto now = std::chrono::steady_clock::now();
@@ -402,7 +408,7 @@ void JobQueue::write_progress() {
             }
             if (job->record.progress.sequence == job->stored_sequence) continue;
             job->stored_sequence = job->record.progress.sequence;
-            changed.emplace_back(id, job->record.progress);
+            changed.emplace_back(job, job->record.progress);
         }
         std::vector<JobRecord> unstored;
         for (const auto& [id, record] : unstored_) unstored.push_back(record);
@@ -410,17 +416,18 @@ void JobQueue::write_progress() {
         // Snapshots before progress: a reader that has seen a progress event then finds the
         // snapshots taken before it, and never skips one for its lower event id.
         for (const auto& [job, snapshot] : snapshots) store_snapshot(*job, *snapshot, now);
-        for (const auto& [id, progress] : changed) {
+        for (const auto& [job, progress] : changed) {
             try {
-                store_.save_progress(id, progress);
+                store_.save_progress(job->id, progress, job->lease);
             } catch (const std::exception& e) {
-                spdlog::error("job {}: progress not stored: {}", id, e.what());
+                spdlog::error("job {}: progress not stored: {}", job->id, e.what());
             }
         }
         std::vector<std::string> stored;
         for (const JobRecord& r : unstored) {
             try {
-                store_.finish(r.id, r.status, r.finished, r.progress, r.error, std::nullopt);
+                store_.finish(r.id, r.status, r.finished, r.progress, r.error, std::nullopt,
+                              std::nullopt, r.lease_token);
                 stored.push_back(r.id);
                 spdlog::info("job {}: its {} state is stored now", r.id, to_string(r.status));
             } catch (const std::exception&) {
@@ -439,7 +446,8 @@ void JobQueue::store_snapshot(LiveJob& job, const JobSnapshot& snapshot,
     const bool with_values = info.values_event_id != job.stored_values_event_id;
     try {
         store_.save_snapshot(job.id, info,
-                             with_values ? std::optional(encode(snapshot.mesh())) : std::nullopt);
+                             with_values ? std::optional(encode(snapshot.mesh())) : std::nullopt,
+                             job.lease);
         job.stored_snapshot_event_id = info.radiosity_event_id;
         job.stored_values_event_id = info.values_event_id;
         job.snapshot_stored_at = now;
@@ -458,7 +466,8 @@ void JobQueue::renew_leases() {
     }
     for (const auto& job : running) {
         try {
-            const LeaseRenewal renewal = store_.renew_lease(job->id, replica_, options_.lease);
+            const LeaseRenewal renewal =
+                store_.renew_lease(job->id, replica_, options_.lease, job->lease);
             if (!renewal.held) {
                 spdlog::warn("job {}: its lease went to another radiantd; this run stops", job->id);
                 job->lease_lost = true;
@@ -589,7 +598,7 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     // A solve that converged just as shutdown began is kept; anything cut short runs again.
     if (job->token.cancelled() && !job->user_cancelled && result.status != SolveStatus::converged) {
         try {
-            store_.release(id);  // not an attempt that killed the process
+            store_.release(id, job->lease);  // not an attempt that killed the process
         } catch (const StoreError& e) {
             spdlog::warn("job {}: attempt not released: {}", id, e.what());
         }
@@ -640,9 +649,16 @@ void JobQueue::store_outcome(LiveJob& job, const JobRecord& outcome, const std::
                              const std::optional<StoredMesh>& mesh) {
     JobRecord stored = outcome;
     try {
-        store_.save_warnings(outcome.id, outcome.warnings);
-        store_.finish(outcome.id, outcome.status, outcome.finished, outcome.progress, outcome.error,
-                      result_json, mesh);
+        store_.save_warnings(outcome.id, outcome.warnings, job.lease);
+        if (!store_.finish(outcome.id, outcome.status, outcome.finished, outcome.progress,
+                           outcome.error, result_json, mesh, job.lease)) {
+            // Cut off from the store for longer than the lease: another replica runs the job.
+            spdlog::warn(
+                "job {}: its lease went to another radiantd; this run's outcome is dropped",
+                outcome.id);
+            job.lease_lost = true;
+            return;
+        }
     } catch (const StoreError& e) {
         // Most often a full disk: the result is lost, and the job says so. The short failed
         // state may still fit where the result did not.
@@ -651,7 +667,7 @@ void JobQueue::store_outcome(LiveJob& job, const JobRecord& outcome, const std::
         stored.error = std::string("the result could not be stored: ") + e.what();
         try {
             store_.finish(stored.id, stored.status, stored.finished, stored.progress, stored.error,
-                          std::nullopt);
+                          std::nullopt, std::nullopt, job.lease);
         } catch (const StoreError&) {
             fail_unstored(job, e.what());
             return;

@@ -55,6 +55,8 @@ struct JobRecord {
     /// The result's `warnings` (radiant-result/1): the scene's once its checks have run, all of
     /// them when the job has finished.
     nlohmann::json warnings = nlohmann::json::array();
+    /// The lease token of the claim that runs the job (JobStore::claim); 0 when no claim does.
+    std::int64_t lease_token = 0;
 };
 
 /// {id, status, progress, created, started, finished, warnings[, error]}: GET /v1/jobs/{id}.
