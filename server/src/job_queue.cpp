@@ -239,8 +239,9 @@ std::shared_ptr<const JobSnapshot> JobQueue::snapshot(const std::string& id) con
         if (job) return job->latest();
     }
     if (store_.shared()) {
-        const std::optional<JobRecord> job = store_.find(id, false);
-        if (job && job->status == JobStatus::running) return remote_snapshot(id);
+        // One query for a job another process runs: the store has a running snapshot only while
+        // the job runs (and none before its first one, when there is no mesh to show either).
+        if (std::shared_ptr<const JobSnapshot> running = remote_snapshot(id)) return running;
         const std::lock_guard lock(mutex_);
         remote_snapshots_.erase(id);
     }
