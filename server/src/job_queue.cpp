@@ -289,11 +289,27 @@ std::optional<std::uint64_t> JobQueue::change_token(const std::string& id) const
 }
 
 RunningScene JobQueue::running_scene(const std::string& id) const {
+    {
+        const std::lock_guard lock(mutex_);
+        if (const auto it = live_.find(id); it != live_.end()) {
+            const std::lock_guard job_lock(it->second->mutex);
+            return it->second->scene;
+        }
+        if (const auto it = remote_scenes_.find(id); it != remote_scenes_.end()) return it->second;
+    }
+    if (!store_.shared()) return {};
+    // Another process runs it: its scene, checked on submission, parses as it did there.
+    const std::optional<JobRecord> job = store_.find(id);
+    if (!job) return {};
+    const proto::ParseOutcome outcome = proto::parse_scene(job->scene_json);
+    if (!outcome.ok()) return {};
+    const RunningScene scene{outcome.scene->name, outcome.scene->settings.digits};
     const std::lock_guard lock(mutex_);
-    const auto it = live_.find(id);
-    if (it == live_.end()) return {};
-    const std::lock_guard job_lock(it->second->mutex);
-    return it->second->scene;
+    if (remote_scenes_.size() >= kMaxRemoteSnapshots && !remote_scenes_.contains(id)) {
+        remote_scenes_.erase(remote_scenes_.begin());
+    }
+    remote_scenes_[id] = scene;
+    return scene;
 }
 
 std::optional<JobRecord> JobQueue::cancel(const std::string& id) {

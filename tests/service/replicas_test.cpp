@@ -191,6 +191,7 @@ TEST_F(ReplicasTest, AStreamOnOneReplicaFollowsAJobSolvedByAnotherAndResumesOnAT
         if (!running.contains("mesh")) std::this_thread::sleep_for(50ms);
     } while (!running.contains("mesh") && std::chrono::steady_clock::now() < deadline);
     EXPECT_TRUE(running.contains("mesh")) << "no stored snapshot of the running solve";
+    EXPECT_EQ(running["scene"], "tiny-room") << "the scene's name, read from the store";
     EXPECT_EQ(job(*a, id)["status"], "running");
 
     const auto stream = http_call(a->port(), verb::get, "/v1/jobs/" + id + "/events");

@@ -83,6 +83,7 @@ public:
     /// (the job runs here, or the store cannot tell). Thread-safe.
     std::optional<std::uint64_t> change_token(const std::string& id) const;
     /// Scene name and result digits of a running job (a finished one's are in its result).
+    /// On a shared store also of a job another process runs (its scene read once). Thread-safe.
     RunningScene running_scene(const std::string& id) const;
 
     /// Cancels: a queued job becomes cancelled at once; a running solve is asked to stop and
@@ -153,6 +154,9 @@ private:
     std::unordered_map<std::string, JobRecord> unstored_;
     /// Guarded by mutex_: remote_snapshot()'s latest, by job id (at most kMaxRemoteSnapshots).
     mutable std::unordered_map<std::string, std::shared_ptr<const JobSnapshot>> remote_snapshots_;
+    /// Guarded by mutex_: running_scene() of jobs other processes run (at most
+    /// kMaxRemoteSnapshots), so that each poll of their result does not parse the scene again.
+    mutable std::unordered_map<std::string, RunningScene> remote_scenes_;
     std::vector<std::thread> workers_;  ///< solvers and the progress writer
     std::string replica_;               ///< owner name in the shared store's leases
 };
