@@ -504,6 +504,11 @@ TEST_P(RouterTest, InvalidUtf8Is400WithAPointerNot500) {
     const json error = json::parse(body.body())["error"];
     EXPECT_EQ(error["code"], "invalid_json");
     EXPECT_EQ(error["pointer"], "/name");
+    for (const std::string& key : {std::string("\xff\xfe"), std::string(201, 'k')}) {
+        const Response refused = s.post(radiant::test::tiny_room(), key);
+        EXPECT_EQ(refused.result(), http::status::bad_request) << refused.body();
+        EXPECT_EQ(json::parse(refused.body())["error"]["code"], "bad_request");
+    }
     const Response path = s.get("/v1/jobs/\xff\xfe");
     EXPECT_EQ(path.result(), http::status::not_found) << "the id is quoted, not thrown on";
     EXPECT_TRUE(json::accept(path.body()));
