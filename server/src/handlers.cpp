@@ -1,5 +1,6 @@
 #include "radiant/server/handlers.h"
 
+#include <algorithm>
 #include <charconv>
 #include <string_view>
 #include <vector>
@@ -93,11 +94,23 @@ std::vector<Problem> strict_problems(const std::vector<Warning>& warnings) {
     return problems;
 }
 
+/// The OpenAPI's Idempotency-Key: at most 200 characters, visible ASCII or spaces, as every
+/// store indexes it alike (PostgreSQL refuses text that is not UTF-8, and long index rows).
+bool valid_idempotency_key(std::string_view key) {
+    return key.size() <= 200 &&
+           std::all_of(key.begin(), key.end(), [](char c) { return c >= 0x20 && c < 0x7f; });
+}
+
 }  // namespace
 
 Response submit_job(ServiceContext& ctx, const Request& request) {
     const std::string& body = request.body();
     if (auto refused = refuse_json_body(request, ctx.max_body_bytes, "a scene")) return *refused;
+    const std::string key(request["Idempotency-Key"]);
+    if (!valid_idempotency_key(key)) {
+        return error_response(request, http::status::bad_request, "bad_request",
+                              "Idempotency-Key must be at most 200 visible ASCII characters");
+    }
     proto::ParseLimits limits;
     limits.max_bytes = ctx.max_body_bytes;
     // One pass: JSON syntax and budget, then the scene.
@@ -124,7 +137,6 @@ Response submit_job(ServiceContext& ctx, const Request& request) {
                                   warned);
         }
     }
-    const std::string key(request["Idempotency-Key"]);
     const SubmitOutcome submitted = ctx.jobs.submit(body, key);
     switch (submitted.kind) {
         case SubmitOutcome::Kind::accepted:
@@ -267,16 +279,9 @@ Response list_jobs(ServiceContext& ctx, const Request& request, const Query& que
     return json_response(request, http::status::ok, body);
 }
 
-Response healthz(ServiceContext& ctx, const Request& request) {
-    if (ctx.jobs.shutting_down()) {
-        return json_response(request, http::status::service_unavailable,
-                             {{"status", "shutting_down"}});
-    }
-    const StoreHealth store = ctx.store.health();
-    if (!store.writable) {
-        return json_response(request, http::status::service_unavailable,
-                             {{"status", "store_unwritable"}, {"reason", store.reason}});
-    }
+Response healthz(const Request& request) {
+    // Liveness only: the process is up and its I/O threads answer. A store that is down or full
+    // is /readyz's to report; a restart would not bring it back.
     return json_response(request, http::status::ok, {{"status", "ok"}});
 }
 

@@ -1,5 +1,6 @@
 #include "radiant/server/job.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -100,6 +101,12 @@ std::string iso8601(UnixMillis millis) {
                   utc.tm_year + 1900, utc.tm_mon + 1, utc.tm_mday, utc.tm_hour, utc.tm_min,
                   utc.tm_sec, static_cast<int>(millis % 1000));
     return text.data();
+}
+
+bool is_job_id(std::string_view text) {
+    return text.size() == 32 && std::all_of(text.begin(), text.end(), [](char c) {
+               return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+           });
 }
 
 nlohmann::json job_to_json(const JobRecord& job) {

@@ -67,7 +67,10 @@ JobProgress job_progress(const Progress& p, std::uint64_t sequence) {
 /// reverse.
 struct JobQueue::LiveJob final : SolveObserver {
     explicit LiveJob(JobRecord r)
-        : id(r.id), record(std::move(r)), last_event_id(record.progress.sequence) {}
+        : id(r.id),
+          lease(r.lease_token),
+          record(std::move(r)),
+          last_event_id(record.progress.sequence) {}
 
     void on_progress(const Progress& p) noexcept override {
         const std::lock_guard lock(mutex);
@@ -113,6 +116,9 @@ struct JobQueue::LiveJob final : SolveObserver {
     }
 
     const std::string id;
+    /// The claim this run holds on a shared store: its writes carry it, and the store refuses
+    /// them once another claim took the job (kUnfenced from the in-memory queue).
+    const LeaseToken lease;
     CancellationToken token;
     std::atomic<bool> user_cancelled{false};  ///< false + token cancelled: shutdown
     /// The shared store gave the job to another process: this run stores nothing.
@@ -128,6 +134,8 @@ struct JobQueue::LiveJob final : SolveObserver {
     /// written; writer thread only.
     std::uint64_t stored_snapshot_event_id = 0, stored_values_event_id = 0;
     std::chrono::steady_clock::time_point snapshot_stored_at;
+    /// The scene text a claim from a shared store brought, for run() (which clears it).
+    std::string claimed_scene_json;
 };
 
 JobQueue::JobQueue(JobStore& store, Metrics& metrics, JobQueueOptions options)
@@ -175,7 +183,7 @@ SubmitOutcome JobQueue::submit(const std::string& scene_json, const std::string&
     const std::size_t shared_waiting = store_.shared() ? queue_length() : 0;
     const std::lock_guard lock(mutex_);
     const std::size_t waiting = store_.shared() ? shared_waiting : queue_.size();
-    if (stopping_) return {SubmitOutcome::Kind::shutting_down, {}, {}};
+    if (draining_ || stopping_) return {SubmitOutcome::Kind::shutting_down, {}, {}};
     if (waiting >= options_.queue_limit) return {SubmitOutcome::Kind::queue_full, {}, {}};
     JobRecord record;
     record.id = new_job_id();
@@ -231,8 +239,9 @@ std::shared_ptr<const JobSnapshot> JobQueue::snapshot(const std::string& id) con
         if (job) return job->latest();
     }
     if (store_.shared()) {
-        const std::optional<JobRecord> job = store_.find(id, false);
-        if (job && job->status == JobStatus::running) return remote_snapshot(id);
+        // One query for a job another process runs: the store has a running snapshot only while
+        // the job runs (and none before its first one, when there is no mesh to show either).
+        if (std::shared_ptr<const JobSnapshot> running = remote_snapshot(id)) return running;
         const std::lock_guard lock(mutex_);
         remote_snapshots_.erase(id);
     }
@@ -280,11 +289,27 @@ std::optional<std::uint64_t> JobQueue::change_token(const std::string& id) const
 }
 
 RunningScene JobQueue::running_scene(const std::string& id) const {
+    {
+        const std::lock_guard lock(mutex_);
+        if (const auto it = live_.find(id); it != live_.end()) {
+            const std::lock_guard job_lock(it->second->mutex);
+            return it->second->scene;
+        }
+        if (const auto it = remote_scenes_.find(id); it != remote_scenes_.end()) return it->second;
+    }
+    if (!store_.shared()) return {};
+    // Another process runs it: its scene, checked on submission, parses as it did there.
+    const std::optional<JobRecord> job = store_.find(id);
+    if (!job) return {};
+    const proto::ParseOutcome outcome = proto::parse_scene(job->scene_json);
+    if (!outcome.ok()) return {};
+    const RunningScene scene{outcome.scene->name, outcome.scene->settings.digits};
     const std::lock_guard lock(mutex_);
-    const auto it = live_.find(id);
-    if (it == live_.end()) return {};
-    const std::lock_guard job_lock(it->second->mutex);
-    return it->second->scene;
+    if (remote_scenes_.size() >= kMaxRemoteSnapshots && !remote_scenes_.contains(id)) {
+        remote_scenes_.erase(remote_scenes_.begin());
+    }
+    remote_scenes_[id] = scene;
+    return scene;
 }
 
 std::optional<JobRecord> JobQueue::cancel(const std::string& id) {
@@ -348,7 +373,22 @@ std::size_t JobQueue::queue_length() const {
 
 bool JobQueue::shutting_down() const {
     const std::lock_guard lock(mutex_);
-    return stopping_;
+    return draining_ || stopping_;
+}
+
+void JobQueue::drain(std::chrono::milliseconds deadline) {
+    {
+        std::unique_lock lock(mutex_);
+        draining_ = true;
+        wake_.notify_all();  // idle workers stop waiting for a job
+        const std::size_t running = solving_;
+        if (running > 0) spdlog::info("draining: {} running job(s) may finish", running);
+        // Leases are still renewed meanwhile: the progress writer runs until shutdown().
+        if (!solved_.wait_for(lock, deadline, [this] { return solving_ == 0 || stopping_; })) {
+            spdlog::info("drain deadline: the running job(s) go back to the queue");
+        }
+    }
+    shutdown();
 }
 
 void JobQueue::shutdown() {
@@ -356,20 +396,20 @@ void JobQueue::shutdown() {
     {
         const std::lock_guard lock(mutex_);
         stopping_ = true;
-        // Queued jobs stay queued in the store; running ones stop and stay "running" there, so
-        // the next process runs both again.
+        // Queued jobs stay queued in the store; running ones stop and run() hands them back.
         for (auto& [id, job] : live_) job->token.cancel();
         workers.swap(workers_);
     }
     wake_.notify_all();
     progress_wake_.notify_all();
+    solved_.notify_all();
     for (std::thread& t : workers) t.join();
 }
 
 void JobQueue::write_progress() {
     std::unique_lock lock(mutex_);
     while (!progress_wake_.wait_for(lock, kProgressWritePeriod, [this] { return stopping_; })) {
-        std::vector<std::pair<std::string, JobProgress>> changed;
+        std::vector<std::pair<std::shared_ptr<LiveJob>, JobProgress>> changed;
         std::vector<std::pair<std::shared_ptr<LiveJob>, std::shared_ptr<const JobSnapshot>>>
             snapshots;
         const auto now = std::chrono::steady_clock::now();
@@ -385,7 +425,7 @@ void JobQueue::write_progress() {
             }
             if (job->record.progress.sequence == job->stored_sequence) continue;
             job->stored_sequence = job->record.progress.sequence;
-            changed.emplace_back(id, job->record.progress);
+            changed.emplace_back(job, job->record.progress);
         }
         std::vector<JobRecord> unstored;
         for (const auto& [id, record] : unstored_) unstored.push_back(record);
@@ -393,17 +433,18 @@ void JobQueue::write_progress() {
         // Snapshots before progress: a reader that has seen a progress event then finds the
         // snapshots taken before it, and never skips one for its lower event id.
         for (const auto& [job, snapshot] : snapshots) store_snapshot(*job, *snapshot, now);
-        for (const auto& [id, progress] : changed) {
+        for (const auto& [job, progress] : changed) {
             try {
-                store_.save_progress(id, progress);
+                store_.save_progress(job->id, progress, job->lease);
             } catch (const std::exception& e) {
-                spdlog::error("job {}: progress not stored: {}", id, e.what());
+                spdlog::error("job {}: progress not stored: {}", job->id, e.what());
             }
         }
         std::vector<std::string> stored;
         for (const JobRecord& r : unstored) {
             try {
-                store_.finish(r.id, r.status, r.finished, r.progress, r.error, std::nullopt);
+                store_.finish(r.id, r.status, r.finished, r.progress, r.error, std::nullopt,
+                              std::nullopt, r.lease_token);
                 stored.push_back(r.id);
                 spdlog::info("job {}: its {} state is stored now", r.id, to_string(r.status));
             } catch (const std::exception&) {
@@ -422,7 +463,8 @@ void JobQueue::store_snapshot(LiveJob& job, const JobSnapshot& snapshot,
     const bool with_values = info.values_event_id != job.stored_values_event_id;
     try {
         store_.save_snapshot(job.id, info,
-                             with_values ? std::optional(encode(snapshot.mesh())) : std::nullopt);
+                             with_values ? std::optional(encode(snapshot.mesh())) : std::nullopt,
+                             job.lease);
         job.stored_snapshot_event_id = info.radiosity_event_id;
         job.stored_values_event_id = info.values_event_id;
         job.snapshot_stored_at = now;
@@ -441,7 +483,8 @@ void JobQueue::renew_leases() {
     }
     for (const auto& job : running) {
         try {
-            const LeaseRenewal renewal = store_.renew_lease(job->id, replica_, options_.lease);
+            const LeaseRenewal renewal =
+                store_.renew_lease(job->id, replica_, options_.lease, job->lease);
             if (!renewal.held) {
                 spdlog::warn("job {}: its lease went to another radiantd; this run stops", job->id);
                 job->lease_lost = true;
@@ -461,10 +504,11 @@ void JobQueue::renew_leases() {
 std::shared_ptr<JobQueue::LiveJob> JobQueue::next_job() {
     if (store_.shared()) return claim_job();
     std::unique_lock lock(mutex_);
-    wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
-    if (stopping_) return nullptr;
+    wake_.wait(lock, [this] { return draining_ || stopping_ || !queue_.empty(); });
+    if (draining_ || stopping_) return nullptr;
     std::shared_ptr<LiveJob> job = queue_.front();
     queue_.pop_front();
+    ++solving_;
     return job;
 }
 
@@ -472,7 +516,7 @@ std::shared_ptr<JobQueue::LiveJob> JobQueue::claim_job() {
     for (;;) {
         {
             const std::lock_guard lock(mutex_);
-            if (stopping_) return nullptr;
+            if (draining_ || stopping_) return nullptr;
         }
         std::optional<JobRecord> claimed;
         try {
@@ -482,10 +526,15 @@ std::shared_ptr<JobQueue::LiveJob> JobQueue::claim_job() {
         }
         std::unique_lock lock(mutex_);
         if (claimed) {
-            claimed->scene_json.clear();  // run() reads it when it needs it
+            // Running here once run() has its scene name, as a job from the in-memory queue.
+            std::string scene_json = std::exchange(claimed->scene_json, std::string());
+            claimed->status = JobStatus::queued;
             auto job = std::make_shared<LiveJob>(std::move(*claimed));
+            job->claimed_scene_json = std::move(scene_json);
             live_.emplace(job->id, job);
-            if (stopping_) job->token.cancel();  // run() hands it back at once
+            ++solving_;
+            // Claimed as a drain began: run() hands it back at once.
+            if (draining_ || stopping_) job->token.cancel();
             spdlog::info("job {} claimed by {}", job->id, replica_);
             return job;
         }
@@ -507,16 +556,22 @@ void JobQueue::work() {
         }
         const std::lock_guard lock(mutex_);
         live_.erase(job->id);
+        --solving_;
+        solved_.notify_all();
     }
 }
 
 void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     const std::string& id = job->id;
-    const std::optional<JobRecord> stored = store_.find(id);
-    if (!stored) return;
+    std::string scene_json = std::move(job->claimed_scene_json);
+    if (scene_json.empty()) {
+        std::optional<JobRecord> stored = store_.find(id);
+        if (!stored) return;
+        scene_json = std::move(stored->scene_json);
+    }
     // The scene was checked on submission; parsing again keeps restarts on the same path. The
     // job turns running together with its scene name, so a running job always has one.
-    const proto::ParseOutcome outcome = proto::parse_scene(stored->scene_json);
+    const proto::ParseOutcome outcome = proto::parse_scene(scene_json);
     {
         const std::lock_guard lock(job->mutex);
         if (outcome.ok()) job->scene = {outcome.scene->name, outcome.scene->settings.digits};
@@ -560,11 +615,11 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
     // A solve that converged just as shutdown began is kept; anything cut short runs again.
     if (job->token.cancelled() && !job->user_cancelled && result.status != SolveStatus::converged) {
         try {
-            store_.release(id);  // not an attempt that killed the process
+            store_.release(id, job->lease);  // not an attempt that killed the process
         } catch (const StoreError& e) {
             spdlog::warn("job {}: attempt not released: {}", id, e.what());
         }
-        spdlog::info("job {} interrupted by shutdown; it runs again after restart", id);
+        spdlog::info("job {} interrupted by shutdown: handed back to the queue", id);
         return;
     }
 
@@ -611,9 +666,16 @@ void JobQueue::store_outcome(LiveJob& job, const JobRecord& outcome, const std::
                              const std::optional<StoredMesh>& mesh) {
     JobRecord stored = outcome;
     try {
-        store_.save_warnings(outcome.id, outcome.warnings);
-        store_.finish(outcome.id, outcome.status, outcome.finished, outcome.progress, outcome.error,
-                      result_json, mesh);
+        store_.save_warnings(outcome.id, outcome.warnings, job.lease);
+        if (!store_.finish(outcome.id, outcome.status, outcome.finished, outcome.progress,
+                           outcome.error, result_json, mesh, job.lease)) {
+            // Cut off from the store for longer than the lease: another replica runs the job.
+            spdlog::warn(
+                "job {}: its lease went to another radiantd; this run's outcome is dropped",
+                outcome.id);
+            job.lease_lost = true;
+            return;
+        }
     } catch (const StoreError& e) {
         // Most often a full disk: the result is lost, and the job says so. The short failed
         // state may still fit where the result did not.
@@ -622,7 +684,7 @@ void JobQueue::store_outcome(LiveJob& job, const JobRecord& outcome, const std::
         stored.error = std::string("the result could not be stored: ") + e.what();
         try {
             store_.finish(stored.id, stored.status, stored.finished, stored.progress, stored.error,
-                          std::nullopt);
+                          std::nullopt, std::nullopt, job.lease);
         } catch (const StoreError&) {
             fail_unstored(job, e.what());
             return;

@@ -126,20 +126,34 @@ int serve(const ServerConfig& config) {
         ctx.access.token.empty() ? "" : ", bearer token required");
     listener->run();
 
+    // A stop drains: no new job is accepted or started, running solves go on for up to
+    // --drain-seconds while requests are still answered, then go back to the queue (another
+    // replica, or the next start, runs them). A second signal hands them back at once.
     net::signal_set signals(ioc, SIGINT, SIGTERM);
+    std::thread drainer;
     signals.async_wait([&](const boost::system::error_code& ec, int signal) {
         if (ec) return;
-        spdlog::info("signal {}: stopping", signal);
-        listener->stop();
-        // Running solves stop and stay "running" in the store, so the next start runs them again.
-        jobs.shutdown();
-        ioc.stop();
+        spdlog::info("signal {}: draining for up to {} s (a second signal stops at once)", signal,
+                     config.drain_seconds);
+        signals.async_wait([&](const boost::system::error_code& again, int) {
+            if (again) return;
+            spdlog::info("second signal: running jobs go back to the queue now");
+            jobs.shutdown();
+        });
+        drainer = std::thread([&] {
+            jobs.drain(std::chrono::milliseconds(static_cast<long>(config.drain_seconds * 1000)));
+            net::post(ioc, [&] {
+                listener->stop();
+                ioc.stop();
+            });
+        });
     });
 
     std::vector<std::thread> threads;
     for (std::size_t i = 1; i < config.io_threads; ++i) threads.emplace_back([&ioc] { ioc.run(); });
     ioc.run();
     for (std::thread& t : threads) t.join();
+    if (drainer.joinable()) drainer.join();
     // Parses still queued finish; the queue is shut, so they answer 503 to nobody.
     scene_pool.join();
     jobs.shutdown();
@@ -171,6 +185,12 @@ int main(int argc, char** argv) {
                    "lease (died) before another one takes it")
         ->envname("RADIANT_LEASE_SECONDS")
         ->check(CLI::Range(2.0, 3600.0))
+        ->capture_default_str();
+    app.add_option("--drain-seconds", config.drain_seconds,
+                   "after SIGTERM, how long running solves may go on before they go back to the "
+                   "queue (0: at once)")
+        ->envname("RADIANT_DRAIN_SECONDS")
+        ->check(CLI::Range(0.0, 3600.0))
         ->capture_default_str();
     app.add_option("--workers", config.workers, "concurrent solves (each uses every core)")
         ->envname("RADIANT_WORKERS")

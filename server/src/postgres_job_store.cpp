@@ -3,6 +3,7 @@
 #include "postgres_change_feed.h"
 #include "postgres_connection.h"
 
+#include <fmt/format.h>
 #include <libpq-fe.h>
 #include <spdlog/spdlog.h>
 
@@ -78,6 +79,9 @@ constexpr const char* kMigrations[] = {
     " $$BEGIN PERFORM pg_notify('radiant_jobs', NEW.job_id); RETURN NULL; END$$;"
     "CREATE TRIGGER snapshots_changed AFTER INSERT OR UPDATE ON snapshots FOR EACH ROW"
     " EXECUTE FUNCTION radiant_snapshot_changed();",
+    // 3: each claim's token, which fences the writes of a run whose lease another claim took
+    // (JobStore::LeaseToken).
+    "ALTER TABLE jobs ADD COLUMN lease_token BIGINT NOT NULL DEFAULT 0;",
 };
 static_assert(std::size(kMigrations) == PostgresJobStore::kSchemaVersion);
 
@@ -102,6 +106,12 @@ std::string expired_lease() {
 }
 
 std::int64_t to_int64(const char* text) { return std::strtoll(text, nullptr, 10); }
+
+/// A condition on jobs that only the run holding `lease` (parameter $n) passes; any run passes
+/// with kUnfenced.
+std::string fenced(int n) {
+    return fmt::format(" AND (${0}::bigint = 0 OR lease_token = ${0}::bigint)", n);
+}
 
 }  // namespace
 
@@ -308,11 +318,19 @@ void PostgresJobStore::mark_running(const std::string& id, UnixMillis started) {
         {std::to_string(started), std::to_string(kHeldForLife), id});
 }
 
-void PostgresJobStore::release(const std::string& id) {
+void PostgresJobStore::release(const std::string& id, LeaseToken lease) {
     const std::lock_guard lock(mutex_);
-    run("UPDATE jobs SET status = 'queued', started = 0, attempts = GREATEST(attempts - 1, 0),"
-        " lease_owner = '', lease_expires = 0 WHERE id = $1 AND status = 'running'",
-        {id});
+    // Another replica takes the job at once: its run's event ids continue above any this one
+    // sent, as after a lease that expired; the stopped run's snapshot is no longer news.
+    transaction([&] {
+        run("UPDATE jobs SET status = 'queued', started = 0, attempts = GREATEST(attempts - 1, 0),"
+            " lease_owner = '', lease_expires = 0, progress = " +
+                bumped_sequence("progress") + " WHERE id = $1 AND status = 'running'" + fenced(2),
+            {id, std::to_string(lease)});
+        run("DELETE FROM snapshots WHERE job_id = $1 AND EXISTS (SELECT 1 FROM jobs WHERE id = $1"
+            " AND status = 'queued')",
+            {id});
+    });
 }
 
 void PostgresJobStore::request_cancel(const std::string& id) {
@@ -322,28 +340,35 @@ void PostgresJobStore::request_cancel(const std::string& id) {
         {id});
 }
 
-void PostgresJobStore::save_progress(const std::string& id, const JobProgress& progress) {
+void PostgresJobStore::save_progress(const std::string& id, const JobProgress& progress,
+                                     LeaseToken lease) {
     const std::lock_guard lock(mutex_);
     // A late write must not replace the final progress of a job that has just finished.
-    run("UPDATE jobs SET progress = $1 WHERE id = $2 AND status = 'running'",
-        {progress_to_json(progress).dump(), id});
+    run("UPDATE jobs SET progress = $1 WHERE id = $2 AND status = 'running'" + fenced(3),
+        {progress_to_json(progress).dump(), id, std::to_string(lease)});
 }
 
-void PostgresJobStore::save_warnings(const std::string& id, const nlohmann::json& warnings) {
+void PostgresJobStore::save_warnings(const std::string& id, const nlohmann::json& warnings,
+                                     LeaseToken lease) {
     const std::lock_guard lock(mutex_);
-    run("UPDATE jobs SET warnings = $1 WHERE id = $2", {warnings.dump(), id});
+    run("UPDATE jobs SET warnings = $1 WHERE id = $2" + fenced(3),
+        {warnings.dump(), id, std::to_string(lease)});
 }
 
-void PostgresJobStore::finish(const std::string& id, JobStatus status, UnixMillis finished,
+bool PostgresJobStore::finish(const std::string& id, JobStatus status, UnixMillis finished,
                               const JobProgress& progress, const std::string& error,
                               const std::optional<std::string>& result_json,
-                              const std::optional<StoredMesh>& mesh) {
+                              const std::optional<StoredMesh>& mesh, LeaseToken lease) {
     const std::lock_guard lock(mutex_);
+    bool held = false;
     transaction([&] {
-        run("UPDATE jobs SET status = $1, finished = $2, progress = $3, error = $4,"
-            " lease_owner = '', lease_expires = 0 WHERE id = $5",
-            {std::string(to_string(status)), std::to_string(finished),
-             progress_to_json(progress).dump(), error, id});
+        held = run("UPDATE jobs SET status = $1, finished = $2, progress = $3, error = $4,"
+                   " lease_owner = '', lease_expires = 0 WHERE id = $5" +
+                       fenced(6) + " RETURNING 1",
+                   {std::string(to_string(status)), std::to_string(finished),
+                    progress_to_json(progress).dump(), error, id, std::to_string(lease)})
+                   .rows() > 0;
+        if (!held) return;  // another claim runs the job now: its outcome is the one to keep
         run("DELETE FROM snapshots WHERE job_id = $1", {id});
         if (result_json) {
             run("INSERT INTO results (job_id, result) VALUES ($1, $2)"
@@ -364,6 +389,7 @@ void PostgresJobStore::finish(const std::string& id, JobStatus status, UnixMilli
                 {false, false, false, false, false, false, true});
         }
     });
+    return held;
 }
 
 std::optional<std::string> PostgresJobStore::result(const std::string& id) const {
@@ -388,12 +414,14 @@ std::optional<StoredMesh> PostgresJobStore::mesh(const std::string& id) const {
 }
 
 void PostgresJobStore::save_snapshot(const std::string& id, const SnapshotInfo& info,
-                                     const std::optional<std::string>& blob) {
+                                     const std::optional<std::string>& blob, LeaseToken lease) {
     const std::lock_guard lock(mutex_);
     transaction([&] {
         // The job's row stays locked until the snapshot is in: a finish() that comes meanwhile
         // waits, then deletes it, and no snapshot outlives its job's run.
-        if (run("SELECT 1 FROM jobs WHERE id = $1 AND status = 'running' FOR UPDATE", {id})
+        if (run("SELECT 1 FROM jobs WHERE id = $1 AND status = 'running'" + fenced(2) +
+                    " FOR UPDATE",
+                {id, std::to_string(lease)})
                 .rows() == 0) {
             return;
         }
@@ -502,25 +530,30 @@ std::optional<JobRecord> PostgresJobStore::claim(const std::string& owner,
                                  kNowMs +
                                  ", attempts = j.attempts + 1, lease_owner = $1,"
                                  " lease_expires = " +
-                                 kNowMs + " + $2, progress = CASE WHEN j.status = 'running' THEN " +
+                                 kNowMs +
+                                 " + $2, lease_token = j.lease_token + 1,"
+                                 " progress = CASE WHEN j.status = 'running' THEN " +
                                  bumped_sequence("j.progress") +
                                  " ELSE j.progress END FROM next WHERE j.seq = next.seq"
                                  " RETURNING j.id, j.status, j.scene, j.idempotency_key,"
                                  " j.created, j.started, j.finished, j.progress, j.error,"
-                                 " j.warnings",
+                                 " j.warnings, j.lease_token",
                              {owner, std::to_string(lease.count())});
-        if (r.rows() > 0) claimed = r.job(0);
+        if (r.rows() > 0) {
+            claimed = r.job(0);
+            claimed->lease_token = r.integer(0, 10);
+        }
     });
     return claimed;
 }
 
 LeaseRenewal PostgresJobStore::renew_lease(const std::string& id, const std::string& owner,
-                                           std::chrono::milliseconds lease) {
+                                           std::chrono::milliseconds lease, LeaseToken token) {
     const std::lock_guard lock(mutex_);
     const Result r = run(std::string("UPDATE jobs SET lease_expires = ") + kNowMs +
-                             " + $1 WHERE id = $2 AND status = 'running' AND lease_owner = $3"
-                             " RETURNING cancel_requested",
-                         {std::to_string(lease.count()), id, owner});
+                             " + $1 WHERE id = $2 AND status = 'running' AND lease_owner = $3" +
+                             fenced(4) + " RETURNING cancel_requested",
+                         {std::to_string(lease.count()), id, owner, std::to_string(token)});
     if (r.rows() == 0) return {};
     return {true, r.boolean(0, 0)};
 }

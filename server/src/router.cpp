@@ -1,5 +1,7 @@
 #include "radiant/server/router.h"
 
+#include "job_errors.h"
+
 #include <spdlog/spdlog.h>
 
 #include <charconv>
@@ -104,7 +106,7 @@ RouteResult Router::dispatch(const Request& request) {
 
     if (parts.size() == 1 && parts[0] == "healthz") {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
-        return {handlers::healthz(ctx_, request), std::nullopt};
+        return {handlers::healthz(request), std::nullopt};
     }
     if (parts.size() == 1 && parts[0] == "readyz") {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
@@ -134,6 +136,7 @@ RouteResult Router::dispatch(const Request& request) {
         return {method_not_allowed(request, "GET, POST"), std::nullopt};
     }
     const std::string id(parts[2]);
+    if (!is_job_id(id)) return {unknown_job(request, id), std::nullopt};
     if (parts.size() == 3) {
         if (get) return {handlers::get_job(ctx_, request, id), std::nullopt};
         if (method == http::verb::delete_) {

@@ -23,6 +23,10 @@ namespace fs = std::filesystem;
 /// count as writable again: room for a few results with their meshes.
 constexpr std::size_t kRecoveredFreeBytes = 16u << 20;
 
+/// A condition on jobs that only the run holding a lease passes (bound twice, after the other
+/// parameters); any run passes with kUnfenced.
+constexpr const char* kFenced = " AND (? = 0 OR lease_token = ?)";
+
 /// The lease of a job that mark_running started: it never expires while the process lives.
 constexpr std::int64_t kHeldForLife = std::numeric_limits<std::int64_t>::max();
 
@@ -259,6 +263,8 @@ void SqliteJobStore::initialise(const JobStoreOptions& options) {
     // The shared queue's lease (JobStore::claim): who runs the job, and until when (Unix ms).
     add_column_if_missing("jobs", "lease_owner", "TEXT NOT NULL DEFAULT ''");
     add_column_if_missing("jobs", "lease_expires", "INTEGER NOT NULL DEFAULT 0");
+    // Each claim's token, which fences the writes of a run another claim took over.
+    add_column_if_missing("jobs", "lease_token", "INTEGER NOT NULL DEFAULT 0");
     exec(
         "CREATE UNIQUE INDEX IF NOT EXISTS jobs_idempotency ON jobs(idempotency_key)"
         " WHERE idempotency_key IS NOT NULL");
@@ -429,14 +435,16 @@ void SqliteJobStore::mark_running(const std::string& id, UnixMillis started) {
         false);
 }
 
-void SqliteJobStore::release(const std::string& id) {
+void SqliteJobStore::release(const std::string& id, LeaseToken lease) {
     const std::lock_guard lock(mutex_);
     write(
         [&] {
-            Statement s(db_,
-                        "UPDATE jobs SET status = 'queued', started = 0,"
-                        " attempts = MAX(attempts - 1, 0) WHERE id = ? AND status = 'running'");
-            s.bind(1, id);
+            Statement s(db_, (std::string("UPDATE jobs SET status = 'queued', started = 0,"
+                                          " attempts = MAX(attempts - 1, 0) WHERE id = ? AND"
+                                          " status = 'running'") +
+                              kFenced)
+                                 .c_str());
+            s.bind(1, id).bind(2, lease).bind(3, lease);
             s.step();
         },
         false);
@@ -455,52 +463,69 @@ void SqliteJobStore::request_cancel(const std::string& id) {
         false);
 }
 
-void SqliteJobStore::save_progress(const std::string& id, const JobProgress& progress) {
+void SqliteJobStore::save_progress(const std::string& id, const JobProgress& progress,
+                                   LeaseToken lease) {
     const std::lock_guard lock(mutex_);
     write(
         [&] {
             // A late write must not replace the final progress of a job that has just finished.
-            Statement s(db_, "UPDATE jobs SET progress = ? WHERE id = ? AND status = 'running'");
-            s.bind(1, progress_to_json(progress).dump()).bind(2, id);
+            Statement s(
+                db_,
+                (std::string("UPDATE jobs SET progress = ? WHERE id = ? AND status = 'running'") +
+                 kFenced)
+                    .c_str());
+            s.bind(1, progress_to_json(progress).dump()).bind(2, id).bind(3, lease).bind(4, lease);
             s.step();
         },
         false);
 }
 
-void SqliteJobStore::save_warnings(const std::string& id, const nlohmann::json& warnings) {
+void SqliteJobStore::save_warnings(const std::string& id, const nlohmann::json& warnings,
+                                   LeaseToken lease) {
     const std::lock_guard lock(mutex_);
     write(
         [&] {
-            Statement s(db_, "UPDATE jobs SET warnings = ? WHERE id = ?");
-            s.bind(1, warnings.dump()).bind(2, id);
+            Statement s(
+                db_, (std::string("UPDATE jobs SET warnings = ? WHERE id = ?") + kFenced).c_str());
+            s.bind(1, warnings.dump()).bind(2, id).bind(3, lease).bind(4, lease);
             s.step();
         },
         false);
 }
 
-void SqliteJobStore::finish(const std::string& id, JobStatus status, UnixMillis finished,
+bool SqliteJobStore::finish(const std::string& id, JobStatus status, UnixMillis finished,
                             const JobProgress& progress, const std::string& error,
                             const std::optional<std::string>& result_json,
-                            const std::optional<StoredMesh>& mesh) {
+                            const std::optional<StoredMesh>& mesh, LeaseToken lease) {
     const std::lock_guard lock(mutex_);
-    write([&] { finish_locked(id, status, finished, progress, error, result_json, mesh); },
-          result_json.has_value());
+    bool held = false;
+    write(
+        [&] {
+            held = finish_locked(id, status, finished, progress, error, result_json, mesh, lease);
+        },
+        result_json.has_value());
+    return held;
 }
 
-void SqliteJobStore::finish_locked(const std::string& id, JobStatus status, UnixMillis finished,
+bool SqliteJobStore::finish_locked(const std::string& id, JobStatus status, UnixMillis finished,
                                    const JobProgress& progress, const std::string& error,
                                    const std::optional<std::string>& result_json,
-                                   const std::optional<StoredMesh>& mesh) {
+                                   const std::optional<StoredMesh>& mesh, LeaseToken lease) {
+    bool held = false;
     transaction([&] {
-        Statement s(db_,
-                    "UPDATE jobs SET status = ?, finished = ?, progress = ?, error = ?"
-                    " WHERE id = ?");
+        Statement s(db_, (std::string("UPDATE jobs SET status = ?, finished = ?, progress = ?,"
+                                      " error = ? WHERE id = ?") +
+                          kFenced + " RETURNING 1")
+                             .c_str());
         s.bind(1, std::string(to_string(status)))
             .bind(2, finished)
             .bind(3, progress_to_json(progress).dump())
             .bind(4, error)
-            .bind(5, id);
-        s.step();
+            .bind(5, id)
+            .bind(6, lease)
+            .bind(7, lease);
+        held = s.step();
+        if (!held) return;  // another claim runs the job now: its outcome is the one to keep
         Statement running(db_, "DELETE FROM snapshots WHERE job_id = ?");
         running.bind(1, id);
         running.step();
@@ -525,6 +550,7 @@ void SqliteJobStore::finish_locked(const std::string& id, JobStatus status, Unix
             m.step();
         }
     });
+    return held;
 }
 
 std::optional<std::string> SqliteJobStore::result(const std::string& id) const {
@@ -550,13 +576,16 @@ std::optional<StoredMesh> SqliteJobStore::mesh(const std::string& id) const {
 }
 
 void SqliteJobStore::save_snapshot(const std::string& id, const SnapshotInfo& info,
-                                   const std::optional<std::string>& blob) {
+                                   const std::optional<std::string>& blob, LeaseToken lease) {
     const std::lock_guard lock(mutex_);
     write(
         [&] {
             transaction([&] {
-                Statement running(db_, "SELECT 1 FROM jobs WHERE id = ? AND status = 'running'");
-                running.bind(1, id);
+                Statement running(
+                    db_, (std::string("SELECT 1 FROM jobs WHERE id = ? AND status = 'running'") +
+                          kFenced)
+                             .c_str());
+                running.bind(1, id).bind(2, lease).bind(3, lease);
                 if (!running.step()) return;
                 // Without a blob, only a row whose values are these already is updated.
                 Statement s(db_, blob ? "INSERT OR REPLACE INTO snapshots (version, mesh_version,"
@@ -660,6 +689,7 @@ std::optional<JobRecord> SqliteJobStore::claim(const std::string& owner,
                                                std::chrono::milliseconds lease, int max_attempts) {
     const std::lock_guard lock(mutex_);
     std::string id;
+    LeaseToken token = kUnfenced;
     write(
         [&] {
             transaction([&] {
@@ -673,15 +703,19 @@ std::optional<JobRecord> SqliteJobStore::claim(const std::string& owner,
                 Statement s(
                     db_,
                     ("UPDATE jobs SET status = 'running', started = ?, attempts = attempts + 1,"
-                     " lease_owner = ?, lease_expires = ?, progress = CASE WHEN status = 'running'"
+                     " lease_owner = ?, lease_expires = ?, lease_token = lease_token + 1,"
+                     " progress = CASE WHEN status = 'running'"
                      " THEN json_object('sequence',"
                      " COALESCE(json_extract(progress, '$.sequence'), 0) + 1000000)"
                      " ELSE progress END"
                      " WHERE seq = (SELECT seq FROM jobs WHERE status = 'queued' OR (" +
-                     expired + ") ORDER BY seq LIMIT 1) RETURNING id")
+                     expired + ") ORDER BY seq LIMIT 1) RETURNING id, lease_token")
                         .c_str());
                 s.bind(1, now).bind(2, owner).bind(3, now + lease.count());
-                if (s.step()) id = s.text(0);
+                if (s.step()) {
+                    id = s.text(0);
+                    token = s.integer(1);
+                }
             });
         },
         false);
@@ -689,19 +723,26 @@ std::optional<JobRecord> SqliteJobStore::claim(const std::string& owner,
     Statement s(db_, select_jobs("WHERE id = ?").c_str());
     s.bind(1, id);
     if (!s.step()) return std::nullopt;
-    return read_job(s);
+    JobRecord claimed = read_job(s);
+    claimed.lease_token = token;
+    return claimed;
 }
 
 LeaseRenewal SqliteJobStore::renew_lease(const std::string& id, const std::string& owner,
-                                         std::chrono::milliseconds lease) {
+                                         std::chrono::milliseconds lease, LeaseToken token) {
     const std::lock_guard lock(mutex_);
     LeaseRenewal renewal;
     write(
         [&] {
-            Statement s(db_,
-                        "UPDATE jobs SET lease_expires = ? WHERE id = ? AND status = 'running'"
-                        " AND lease_owner = ? RETURNING cancel_requested");
-            s.bind(1, now_millis() + lease.count()).bind(2, id).bind(3, owner);
+            Statement s(db_, (std::string("UPDATE jobs SET lease_expires = ? WHERE id = ? AND"
+                                          " status = 'running' AND lease_owner = ?") +
+                              kFenced + " RETURNING cancel_requested")
+                                 .c_str());
+            s.bind(1, now_millis() + lease.count())
+                .bind(2, id)
+                .bind(3, owner)
+                .bind(4, token)
+                .bind(5, token);
             if (s.step()) {
                 renewal.held = true;
                 renewal.cancel_requested = s.integer(0) != 0;

@@ -25,10 +25,12 @@ using nlohmann::json;
 using radiant::test::Daemon;
 using radiant::test::http_call;
 
-class DaemonTest : public radiant::test::DaemonFixture {};
+class DaemonTest : public radiant::test::StoreDaemonFixture {};
+INSTANTIATE_TEST_SUITE_P(Stores, DaemonTest, radiant::test::both_stores(),
+                         radiant::test::store_name);
 
-TEST_F(DaemonTest, SolvesRefusesAndStreams) {
-    Daemon d(data(), {"--max-body-bytes", "100000", "--queue-limit", "1"}, log());
+TEST_P(DaemonTest, SolvesRefusesAndStreams) {
+    Daemon d(data(), flags({"--max-body-bytes", "100000", "--queue-limit", "1"}), log());
 
     const std::string id = post(d, radiant::test::tiny_room());
     ASSERT_EQ(wait_for(d, id, "done")["status"], "done");
@@ -77,8 +79,8 @@ TEST_F(DaemonTest, SolvesRefusesAndStreams) {
     EXPECT_NE(metrics.body.find("radiant_jobs{state=\"done\"} 1"), std::string::npos);
 }
 
-TEST_F(DaemonTest, QueueFullCancelAndStreamOfARunningJob) {
-    Daemon d(data(), {"--queue-limit", "1"}, log());
+TEST_P(DaemonTest, QueueFullCancelAndStreamOfARunningJob) {
+    Daemon d(data(), flags({"--queue-limit", "1"}), log());
     const std::string slow = post(d, radiant::test::slow_room());
     ASSERT_EQ(wait_for(d, slow, "running")["status"], "running");
     const std::string queued = post(d, radiant::test::tiny_room());
@@ -100,25 +102,64 @@ TEST_F(DaemonTest, QueueFullCancelAndStreamOfARunningJob) {
     EXPECT_EQ(wait_for(d, queued, "done")["status"], "done");
 }
 
-TEST_F(DaemonTest, KillNineLosesNoAcceptedJob) {
+TEST_P(DaemonTest, KillNineLosesNoAcceptedJob) {
     std::string slow, queued;
     {
-        Daemon d(data(), {}, log());
+        Daemon d(data(), flags(), log());
         slow = post(d, radiant::test::slow_room(1));
         ASSERT_EQ(wait_for(d, slow, "running")["status"], "running");
         queued = post(d, radiant::test::tiny_room());
         d.stop(SIGKILL);
     }
-    Daemon d(data(), {}, log());
+    Daemon d(data(), flags(), log());
     EXPECT_EQ(wait_for(d, queued, "done")["status"], "done");
     EXPECT_EQ(wait_for(d, slow, "done")["status"], "done");  // ran again, up to its 1 s limit
 }
 
-TEST_F(DaemonTest, SigtermStopsCleanly) {
-    Daemon d(data(), {}, log());
-    const std::string slow = post(d, radiant::test::slow_room());
-    ASSERT_EQ(wait_for(d, slow, "running")["status"], "running");
-    EXPECT_EQ(d.stop(SIGTERM), 0);
+TEST_P(DaemonTest, SigtermLetsTheRunningJobFinishWithinTheDrain) {
+    std::string id, queued;
+    {
+        Daemon d(data(), flags(), log());
+        id = post(d, radiant::test::slow_room(2));  // ends at its 2 s limit, done
+        ASSERT_EQ(wait_for(d, id, "running")["status"], "running");
+        queued = post(d, radiant::test::tiny_room());
+        EXPECT_EQ(d.stop(SIGTERM), 0);
+    }
+    // The drained daemon stored the result; the job that waited was not started.
+    const fs::path check_log = dir_ / "check.log";
+    Daemon d(data(), flags(), check_log);
+    const json j = job(d, id);
+    EXPECT_EQ(j["status"], "done") << j.dump();
+    EXPECT_EQ(http_call(d.port(), verb::get, "/v1/jobs/" + id + "/result").status, 200u);
+    EXPECT_EQ(wait_for(d, queued, "done")["status"], "done");
+    EXPECT_NE(radiant::test::read_text(log()).find("draining: 1 running job(s) may finish"),
+              std::string::npos);
+}
+
+TEST_P(DaemonTest, SigtermPastTheDrainDeadlineHandsTheJobBack) {
+    std::string id;
+    {
+        Daemon d(data(), flags({"--drain-seconds", "0.5"}), log());
+        id = post(d, radiant::test::slow_room());
+        ASSERT_EQ(wait_for(d, id, "running")["status"], "running");
+        EXPECT_EQ(d.stop(SIGTERM), 0);
+    }
+    EXPECT_NE(radiant::test::read_text(log()).find("handed back to the queue"), std::string::npos);
+    // Queued again, its attempt not counted: after a restart it runs, and after a kill of that
+    // run it still runs again, where a counted hand-back would have spent both attempts.
+    json started;
+    for (int run = 0; run < 2; ++run) {
+        Daemon d(data(), flags(), log());
+        const json j = wait_for_new_run(d, id, started);
+        ASSERT_EQ(j["status"], "running") << "run " << run << ": " << j.dump();
+        started = j["started"];
+        if (run == 0) {
+            d.stop(SIGKILL);
+        } else {
+            EXPECT_EQ(http_call(d.port(), verb::delete_, "/v1/jobs/" + id).status, 202u);
+            EXPECT_EQ(wait_for(d, id, "cancelled")["status"], "cancelled");
+        }
+    }
 }
 
 }  // namespace
@@ -136,8 +177,8 @@ std::pair<int, std::string> cli(unsigned short port, const std::string& args, co
             radiant::test::read_text(dir / "cli.out")};
 }
 
-TEST_F(DaemonTest, CliSubmitWaitStatusWatchResult) {
-    Daemon d(data(), {}, log());
+TEST_P(DaemonTest, CliSubmitWaitStatusWatchResult) {
+    Daemon d(data(), flags(), log());
     const fs::path scene = dir_ / "room.json";
     { std::ofstream(scene) << radiant::test::tiny_room(); }
     const auto [wait_code, result] = cli(d.port(), "submit --wait '" + scene.string() + "'", dir_);
@@ -167,8 +208,8 @@ std::string many_keys_body() {
     return body + R"(}, "surfaces": []})";
 }
 
-TEST_F(DaemonTest, HealthzAnswersFastWhileHostileBodiesAreParsed) {
-    Daemon d(data(), {}, log());
+TEST_P(DaemonTest, HealthzAnswersFastWhileHostileBodiesAreParsed) {
+    Daemon d(data(), flags(), log());
     const std::string body = many_keys_body();
     std::vector<std::thread> senders;
     std::vector<unsigned> statuses(2);
@@ -203,10 +244,10 @@ TEST_F(DaemonTest, HealthzAnswersFastWhileHostileBodiesAreParsed) {
     EXPECT_LT(ms.back(), 1000.0) << ms.size() << " polls, median " << ms[ms.size() / 2] << " ms";
 }
 
-TEST_F(DaemonTest, TokenFileGuardsEveryRouteButHealthzAndTheCliSendsIt) {
+TEST_P(DaemonTest, TokenFileGuardsEveryRouteButHealthzAndTheCliSendsIt) {
     const fs::path token = dir_ / "token";
     std::ofstream(token) << "cli-s3cret\n";
-    Daemon d(data(), {"--token-file", token.string()}, log());
+    Daemon d(data(), flags({"--token-file", token.string()}), log());
     EXPECT_EQ(http_call(d.port(), verb::get, "/healthz").status, 200u);
     EXPECT_EQ(http_call(d.port(), verb::get, "/v1/jobs").status, 401u);
     EXPECT_EQ(http_call(d.port(), verb::post, "/v1/jobs", radiant::test::tiny_room()).status, 401u);

@@ -77,12 +77,15 @@ TEST_F(DeploymentFilesTest, AMistakeInAnyReferenceFailsTheCheck) {
     replace(copy / "k8s" / "deployment.yaml", "key: RADIANT_STORE", "key: STORE");
     replace(copy / "compose.yaml", "RADIANT_REPLICA: radiant-2", "RADIANT_REPLICAS: radiant-2");
     replace(copy / "nginx.conf", "server radiant-3:8080", "server radiant-4:8080");
+    replace(copy / "k8s" / "deployment.yaml", "terminationGracePeriodSeconds: 30",
+            "terminationGracePeriodSeconds: 15");
     const Check bad = check(copy);
     EXPECT_EQ(bad.code, 1) << bad.out;
     for (const char* problem :
          {"radiantd has no flag --lease-secs", "the readinessProbe asks /ready, not /readyz",
           "RADIANT_STORE comes from no key of a Secret", "reads no variable RADIANT_REPLICAS",
-          "distinct RADIANT_REPLICA names", "nginx.conf sends to", "answers 404 to GET /ready"}) {
+          "distinct RADIANT_REPLICA names", "nginx.conf sends to", "answers 404 to GET /ready",
+          "waits 15 s after SIGTERM, radiantd drains for 20.0 s"}) {
         EXPECT_NE(bad.out.find(problem), std::string::npos) << problem << "\n" << bad.out;
     }
 }

@@ -229,6 +229,53 @@ TEST_P(JobStoreContract, AHeartbeatKeepsTheLeaseAndAnExpiredOneIsClaimedAgain) {
     EXPECT_TRUE(store().renew_lease(j.id, "b", 60s).held);
 }
 
+TEST_P(JobStoreContract, ARunWhoseLeaseAnotherClaimTookCanNoLongerWriteTheJob) {
+    const JobRecord j = inserted();
+    // Two workers of one replica ("r"): the first is cut off from the store past its lease, the
+    // second claims the job again. Only the lease token tells their writes apart.
+    const auto cut_off = store().claim("r", 50ms, kMaxAttempts);
+    ASSERT_TRUE(cut_off);
+    std::this_thread::sleep_for(100ms);
+    JobStore& other = replica();
+    const auto owner = other.claim("r", 60s, kMaxAttempts);
+    ASSERT_TRUE(owner);
+    ASSERT_EQ(owner->id, j.id);
+    EXPECT_GT(owner->lease_token, cut_off->lease_token);
+    JobProgress progress;
+    progress.sequence = owner->progress.sequence + 5;
+    other.save_progress(j.id, progress, owner->lease_token);
+    SnapshotInfo info;
+    info.values_event_id = info.radiosity_event_id = progress.sequence;
+    other.save_snapshot(j.id, info, std::string("owner's mesh"), owner->lease_token);
+
+    // The cut-off run comes back and writes as if it still ran the job: all refused.
+    JobProgress stale;
+    stale.sequence = 3;
+    store().save_progress(j.id, stale, cut_off->lease_token);
+    store().save_warnings(j.id, nlohmann::json::array({"stale"}), cut_off->lease_token);
+    SnapshotInfo stale_info;
+    stale_info.values_event_id = stale_info.radiosity_event_id = 2;
+    store().save_snapshot(j.id, stale_info, std::string("stale mesh"), cut_off->lease_token);
+    EXPECT_FALSE(store().renew_lease(j.id, "r", 60s, cut_off->lease_token).held);
+    EXPECT_FALSE(store().finish(j.id, JobStatus::done, now_millis(), stale, "",
+                                std::string("stale result"), std::nullopt, cut_off->lease_token));
+    store().release(j.id, cut_off->lease_token);
+
+    const auto seen = store().find(j.id, false);
+    EXPECT_EQ(seen->status, JobStatus::running);
+    EXPECT_EQ(seen->progress.sequence, progress.sequence);
+    EXPECT_EQ(seen->warnings, nlohmann::json::array());
+    EXPECT_FALSE(store().result(j.id));
+    const auto snapshot = store().running_snapshot(j.id, 0);
+    ASSERT_TRUE(snapshot);
+    EXPECT_EQ(snapshot->blob, "owner's mesh");
+    // The owner's own writes go on.
+    EXPECT_TRUE(other.renew_lease(j.id, "r", 60s, owner->lease_token).held);
+    EXPECT_TRUE(other.finish(j.id, JobStatus::done, now_millis(), progress, "",
+                             std::string("owner's result"), std::nullopt, owner->lease_token));
+    EXPECT_EQ(store().result(j.id), "owner's result");
+}
+
 TEST_P(JobStoreContract, AJobWhoseRunnerDiesMaxAttemptsTimesFailsWithTheReason) {
     const JobRecord j = inserted();
     for (int attempt = 0; attempt < kMaxAttempts; ++attempt) {

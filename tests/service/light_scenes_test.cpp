@@ -12,6 +12,7 @@
 
 #include "daemon.h"
 #include "service_scenes.h"
+#include "store_under_test.h"
 
 namespace {
 
@@ -21,12 +22,16 @@ using nlohmann::json;
 using radiant::test::Daemon;
 using radiant::test::http_call;
 
-TEST(LightScenesService, EvaluatesTenThousandPointsFromTheStoredSolveInUnderFiftyMs) {
+using LightScenesService = radiant::test::StoreTest;
+INSTANTIATE_TEST_SUITE_P(Stores, LightScenesService, radiant::test::both_stores(),
+                         radiant::test::store_name);
+
+TEST_P(LightScenesService, EvaluatesTenThousandPointsFromTheStoredSolveInUnderFiftyMs) {
     const fs::path dir =
         fs::temp_directory_path() / ("radiant_light_scenes_test_" + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
-    Daemon d(dir / "data", {}, dir / "radiantd.log");
+    Daemon d(dir / "data", flags(), dir / "radiantd.log");
 
     const auto posted =
         http_call(d.port(), verb::post, "/v1/jobs", radiant::test::grouped_room(100));

@@ -10,6 +10,7 @@
 
 #include "daemon.h"
 #include "service_scenes.h"
+#include "store_under_test.h"
 #include "test_files.h"
 
 namespace {
@@ -29,13 +30,16 @@ LoadRun load(const std::string& args, const fs::path& dir) {
             radiant::test::read_text(dir / "load.out")};
 }
 
-TEST(Load, ShortRunAnswersEveryPollWhileSolvesRun) {
+using LoadTest = radiant::test::StoreTest;
+INSTANTIATE_TEST_SUITE_P(Stores, LoadTest, radiant::test::both_stores(), radiant::test::store_name);
+
+TEST_P(LoadTest, ShortRunAnswersEveryPollWhileSolvesRun) {
     const fs::path dir =
         fs::temp_directory_path() / ("radiant_load_test_" + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     { std::ofstream(dir / "room.json") << radiant::test::tiny_room(); }
-    radiant::test::Daemon d(dir / "data", {}, dir / "radiantd.log");
+    radiant::test::Daemon d(dir / "data", flags(), dir / "radiantd.log");
     const std::string server = "http://127.0.0.1:" + std::to_string(d.port());
 
     const LoadRun run = load("--server " + server + " --scene '" + (dir / "room.json").string() +

@@ -15,6 +15,7 @@
 #include "daemon.h"
 #include "service_scenes.h"
 #include "sse.h"
+#include "store_under_test.h"
 #include "test_files.h"
 
 namespace {
@@ -89,12 +90,17 @@ std::string wait_for(unsigned short port, const std::string& id, const std::stri
     return status;
 }
 
-TEST(OpenApi, EveryAnswerMatchesTheSpec) {
+using OpenApiTest = radiant::test::StoreTest;
+INSTANTIATE_TEST_SUITE_P(Stores, OpenApiTest, radiant::test::both_stores(),
+                         radiant::test::store_name);
+
+TEST_P(OpenApiTest, EveryAnswerMatchesTheSpec) {
     const fs::path dir =
         fs::temp_directory_path() / ("radiant_openapi_test_" + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
-    radiant::test::Daemon d(dir / "data", {"--queue-limit", "1", "--max-body-bytes", "100000"},
+    radiant::test::Daemon d(dir / "data",
+                            flags({"--queue-limit", "1", "--max-body-bytes", "100000"}),
                             dir / "radiantd.log");
     Recorder rec(d.port());
     const std::string jobs = "/v1/jobs", job = "/v1/jobs/{id}";

@@ -50,24 +50,28 @@ TEST_F(PostgresJobStoreTest, ASchemaNewerThanThisBuildIsRefused) {
     }
 }
 
-TEST_F(PostgresJobStoreTest, AVersionOneDatabaseGainsRunningSnapshotsOnStart) {
+TEST_F(PostgresJobStoreTest, AVersionOneDatabaseGainsRunningSnapshotsAndLeaseTokensOnStart) {
     { PostgresJobStore first(uri()); }
-    // The database as radiantd with schema 1 left it: no snapshots, no change notifications.
+    // The database as radiantd with schema 1 left it: no snapshots, no change notifications, no
+    // lease tokens.
     shared_postgres().execute(database_,
                               "DROP TABLE snapshots; DROP FUNCTION radiant_job_changed CASCADE;"
-                              " DROP FUNCTION radiant_snapshot_changed; UPDATE radiant_schema"
-                              " SET version = 1");
+                              " DROP FUNCTION radiant_snapshot_changed;"
+                              " ALTER TABLE jobs DROP COLUMN lease_token;"
+                              " UPDATE radiant_schema SET version = 1");
     PostgresJobStore store(uri());
-    EXPECT_EQ(store.schema_version(), 2);
+    EXPECT_EQ(store.schema_version(), PostgresJobStore::kSchemaVersion);
     JobRecord job;
     job.id = new_job_id();
     job.scene_json = "{}";
     job.created = now_millis();
     store.insert(job);
-    ASSERT_TRUE(store.claim("a", std::chrono::seconds(60), 2));
+    const auto claimed = store.claim("a", std::chrono::seconds(60), 2);
+    ASSERT_TRUE(claimed);
+    EXPECT_GT(claimed->lease_token, 0);
     SnapshotInfo info;
     info.values_event_id = info.radiosity_event_id = 1;
-    store.save_snapshot(job.id, info, std::string("mesh"));
+    store.save_snapshot(job.id, info, std::string("mesh"), claimed->lease_token);
     EXPECT_EQ(store.running_snapshot(job.id, 0)->blob, "mesh");
 }
 

@@ -16,6 +16,7 @@
 
 #include "daemon.h"
 #include "sse.h"
+#include "store_under_test.h"
 #include "test_files.h"
 
 namespace {
@@ -37,9 +38,11 @@ std::string office() {
     return scene.dump();
 }
 
-class RadiosityStream : public ::testing::Test {
+class RadiosityStream : public radiant::test::StoreTest {
 protected:
     void SetUp() override {
+        StoreTest::SetUp();
+        if (IsSkipped()) return;
         dir_ = fs::temp_directory_path() / ("radiant_stream_test_" + std::to_string(getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
@@ -50,6 +53,8 @@ protected:
     }
     fs::path dir_;
 };
+INSTANTIATE_TEST_SUITE_P(Stores, RadiosityStream, radiant::test::both_stores(),
+                         radiant::test::store_name);
 
 /// The values of a base64 float32 (or int32) array of an event.
 template <typename T>
@@ -74,8 +79,8 @@ std::vector<float> as_floats(const json& array, bool nested = false) {
     return out;
 }
 
-TEST_F(RadiosityStream, AtLeastOneSnapshotPerSecondAndTheFinalOneIsTheResult) {
-    Daemon d(dir_ / "data", {}, dir_ / "radiantd.log");
+TEST_P(RadiosityStream, AtLeastOneSnapshotPerSecondAndTheFinalOneIsTheResult) {
+    Daemon d(dir_ / "data", flags(), dir_ / "radiantd.log");
     const auto posted = http_call(d.port(), verb::post, "/v1/jobs", office());
     ASSERT_EQ(posted.status, 202u) << posted.body;
     const std::string id = json::parse(posted.body)["id"];

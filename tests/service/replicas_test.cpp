@@ -45,11 +45,13 @@ protected:
     }
 
     /// A replica named `name`; a short lease, so that a killed replica's job moves on soon.
-    std::unique_ptr<Daemon> start(const std::string& name) {
+    std::unique_ptr<Daemon> start(const std::string& name, const std::string& lease_seconds = "2",
+                                  const std::string& drain_seconds = "20") {
         return std::make_unique<Daemon>(
             dir_ / name,
             std::vector<std::string>{"--store", shared_postgres().url(database_), "--replica", name,
-                                     "--lease-seconds", "2", "--workers", "1"},
+                                     "--lease-seconds", lease_seconds, "--drain-seconds",
+                                     drain_seconds, "--workers", "1"},
             log());
     }
     /// `sql`'s first row on the shared database.
@@ -129,6 +131,23 @@ TEST_F(ReplicasTest, ThirtyJobsEndDoneOnceThoughTheReplicaRunningOneIsKilledTwic
     EXPECT_EQ(query("SELECT COUNT(*) FROM jobs WHERE attempts <> 1")[0], "2");
 }
 
+TEST_F(ReplicasTest, ASigtermedReplicaHandsItsRunningJobToAnotherAtOnce) {
+    // A lease far longer than the test: only a hand-back lets the other replica take the job.
+    const std::unique_ptr<Daemon> a = start("a", "600", "0.5");
+    const std::string id = post(*a, radiant::test::slow_room(3));
+    ASSERT_EQ(wait_for(*a, id, "running")["status"], "running");
+    ASSERT_EQ(query("SELECT lease_owner FROM jobs WHERE id = '" + id + "'")[0], "a");
+    const std::unique_ptr<Daemon> b = start("b", "600", "0.5");
+    EXPECT_EQ(a->stop(SIGTERM), 0) << "a drained past its deadline and stopped cleanly";
+    EXPECT_EQ(wait_for(*b, id, "done", 30)["status"], "done");
+    EXPECT_EQ(query("SELECT lease_owner FROM jobs WHERE id = '" + id + "'")[0], "");
+    EXPECT_EQ(query("SELECT COUNT(*) FROM results WHERE job_id = '" + id + "'")[0], "1");
+    // a's cut-short run is no failed attempt: b's is the only one counted.
+    EXPECT_EQ(query("SELECT attempts FROM jobs WHERE id = '" + id + "'")[0], "1");
+    EXPECT_NE(radiant::test::read_text(log()).find("job " + id + " claimed by b"),
+              std::string::npos);
+}
+
 TEST_F(ReplicasTest, AReplicaIsReadyOnlyWhileItsDatabaseAnswers) {
     const std::unique_ptr<Daemon> r = start("r");
     EXPECT_EQ(http_call(r->port(), verb::get, "/readyz").status, 200u);
@@ -148,6 +167,8 @@ TEST_F(ReplicasTest, AReplicaIsReadyOnlyWhileItsDatabaseAnswers) {
     EXPECT_EQ(error["code"], "store_unwritable") << down.body;
     EXPECT_NE(error["message"].get<std::string>().find("job store: "), std::string::npos)
         << down.body;
+    EXPECT_EQ(http_call(r->port(), verb::get, "/healthz").status, 200u)
+        << "alive all the same: a restart would not bring the database back";
     shared_postgres().execute("postgres",
                               "ALTER DATABASE " + database_ + " ALLOW_CONNECTIONS true");
     EXPECT_EQ(http_call(r->port(), verb::get, "/readyz").status, 200u) << "ready again";
@@ -170,6 +191,7 @@ TEST_F(ReplicasTest, AStreamOnOneReplicaFollowsAJobSolvedByAnotherAndResumesOnAT
         if (!running.contains("mesh")) std::this_thread::sleep_for(50ms);
     } while (!running.contains("mesh") && std::chrono::steady_clock::now() < deadline);
     EXPECT_TRUE(running.contains("mesh")) << "no stored snapshot of the running solve";
+    EXPECT_EQ(running["scene"], "tiny-room") << "the scene's name, read from the store";
     EXPECT_EQ(job(*a, id)["status"], "running");
 
     const auto stream = http_call(a->port(), verb::get, "/v1/jobs/" + id + "/events");

@@ -19,6 +19,7 @@
 #include "radiant/server/config.h"
 #include "radiant/server/sqlite_job_store.h"
 #include "service_scenes.h"
+#include "store_under_test.h"
 #include "test_files.h"
 
 namespace {
@@ -27,14 +28,17 @@ namespace fs = std::filesystem;
 using namespace radiant::server;
 using nlohmann::json;
 
-/// A store in a fresh temp directory, a queue with one worker, and the router over them.
+/// A store (`store`'s, SQLite in a fresh temp directory), a queue with one worker, and the router
+/// over them.
 class Service {
 public:
-    explicit Service(JobQueueOptions options = {}, std::size_t max_body_bytes = 1 << 20)
+    explicit Service(const radiant::test::StoreUnderTest& store, JobQueueOptions options = {},
+                     std::size_t max_body_bytes = 1 << 20)
         : dir_(fs::temp_directory_path() /
                ("radiant_router_test_" + std::to_string(getpid()) + "_" + std::to_string(++n_))) {
         fs::remove_all(dir_);
-        store_ = std::make_unique<SqliteJobStore>(dir_);
+        fs::create_directories(dir_);
+        store_ = store.open(dir_);
         jobs_ = std::make_unique<JobQueue>(*store_, metrics_, options);
         ctx_ = std::make_unique<ServiceContext>(
             ServiceContext{*jobs_, *store_, metrics_, max_body_bytes});
@@ -98,10 +102,14 @@ private:
     std::unique_ptr<Router> router_;
 };
 
+using RouterTest = radiant::test::StoreTest;
+INSTANTIATE_TEST_SUITE_P(Stores, RouterTest, radiant::test::both_stores(),
+                         radiant::test::store_name);
+
 std::string id_of(const Response& response) { return json::parse(response.body())["id"]; }
 
-TEST(Router, GoodSceneIsAcceptedAndSolved) {
-    Service s;
+TEST_P(RouterTest, GoodSceneIsAcceptedAndSolved) {
+    Service s(store());
     const Response posted = s.post(radiant::test::tiny_room());
     ASSERT_EQ(posted.result(), http::status::accepted) << posted.body();
     const std::string id = id_of(posted);
@@ -123,8 +131,8 @@ TEST(Router, GoodSceneIsAcceptedAndSolved) {
     EXPECT_GT(doc["sensors"][0]["average"].get<double>(), 0);
 }
 
-TEST(Router, ResultGlbIsAValidGltfOfTheSolvedMeshAndSensors) {
-    Service s;
+TEST_P(RouterTest, ResultGlbIsAValidGltfOfTheSolvedMeshAndSensors) {
+    Service s(store());
     const Response posted = s.post(radiant::test::tiny_room());
     ASSERT_EQ(posted.result(), http::status::accepted) << posted.body();
     const std::string id = id_of(posted);
@@ -168,8 +176,8 @@ std::string solved_grid_room(Service& s) {
     return id;
 }
 
-TEST(Router, SensorsCsvHoldsTheResultsPointsAndLux) {
-    Service s;
+TEST_P(RouterTest, SensorsCsvHoldsTheResultsPointsAndLux) {
+    Service s(store());
     const std::string id = solved_grid_room(s);
     const json result = json::parse(s.get("/v1/jobs/" + id + "/result").body());
     const Response csv = s.get("/v1/jobs/" + id + "/sensors.csv");
@@ -192,8 +200,8 @@ TEST(Router, SensorsCsvHoldsTheResultsPointsAndLux) {
         << csv.body();
 }
 
-TEST(Router, ThreePicturesOfOneSolveCostOneSolve) {
-    Service s;
+TEST_P(RouterTest, ThreePicturesOfOneSolveCostOneSolve) {
+    Service s(store());
     const std::string id = solved_grid_room(s);
     const std::string base = "/v1/jobs/" + id;
     for (const std::string picture :
@@ -208,8 +216,8 @@ TEST(Router, ThreePicturesOfOneSolveCostOneSolve) {
     EXPECT_NE(metrics.find("\nradiant_solves_total 1\n"), std::string::npos) << metrics;
 }
 
-TEST(Router, PictureQueriesAreChecked) {
-    Service s;
+TEST_P(RouterTest, PictureQueriesAreChecked) {
+    Service s(store());
     const std::string id = solved_grid_room(s);
     const std::string base = "/v1/jobs/" + id;
     for (const char* bad :
@@ -227,8 +235,8 @@ TEST(Router, PictureQueriesAreChecked) {
               http::status::method_not_allowed);
 }
 
-TEST(Router, OpenApiIsServed) {
-    Service s;
+TEST_P(RouterTest, OpenApiIsServed) {
+    Service s(store());
     const Response r = s.get("/v1/openapi.yaml");
     ASSERT_EQ(r.result(), http::status::ok);
     EXPECT_EQ(r[http::field::content_type], "application/yaml");
@@ -236,15 +244,15 @@ TEST(Router, OpenApiIsServed) {
               radiant::test::read_text(fs::path(RADIANT_SOURCE_DIR) / "proto/openapi.yaml"));
 }
 
-TEST(Router, BadJsonIs400) {
-    Service s;
+TEST_P(RouterTest, BadJsonIs400) {
+    Service s(store());
     const Response r = s.post("{not json");
     EXPECT_EQ(r.result(), http::status::bad_request);
     EXPECT_EQ(json::parse(r.body())["error"]["code"], "invalid_json");
 }
 
-TEST(Router, BadSceneIs400WithTheValidatePointers) {
-    Service s;
+TEST_P(RouterTest, BadSceneIs400WithTheValidatePointers) {
+    Service s(store());
     const std::string text =
         radiant::test::read_text(std::string(RADIANT_TEST_DATA) + "/bad/unknown-material.json");
     const Response r = s.post(text);
@@ -258,13 +266,13 @@ TEST(Router, BadSceneIs400WithTheValidatePointers) {
     EXPECT_EQ(error["problems"].size(), expected.size());
 }
 
-TEST(Router, TooLargeIs413) {
-    Service s({}, 100);
+TEST_P(RouterTest, TooLargeIs413) {
+    Service s(store(), {}, 100);
     EXPECT_EQ(s.post(radiant::test::tiny_room()).result(), http::status::payload_too_large);
 }
 
-TEST(Router, UnknownJobsRoutesAndMethods) {
-    Service s;
+TEST_P(RouterTest, UnknownJobsRoutesAndMethods) {
+    Service s(store());
     EXPECT_EQ(s.get("/v1/jobs/nope").result(), http::status::not_found);
     EXPECT_EQ(s.get("/v1/jobs/nope/result").result(), http::status::not_found);
     EXPECT_EQ(s.del("/v1/jobs/nope").result(), http::status::not_found);
@@ -274,10 +282,10 @@ TEST(Router, UnknownJobsRoutesAndMethods) {
     EXPECT_EQ(json::parse(s.get("/nowhere").body())["error"]["code"], "not_found");
 }
 
-TEST(Router, FullQueueIs429WithRetryAfterAndCancelWorks) {
+TEST_P(RouterTest, FullQueueIs429WithRetryAfterAndCancelWorks) {
     JobQueueOptions options;
     options.queue_limit = 1;
-    Service s(options);
+    Service s(store(), options);
     const std::string running = id_of(s.post(radiant::test::slow_room()));
     ASSERT_EQ(s.wait_for(running, "running")["status"], "running");
     const std::string queued = id_of(s.post(radiant::test::tiny_room()));
@@ -301,8 +309,8 @@ TEST(Router, FullQueueIs429WithRetryAfterAndCancelWorks) {
     EXPECT_EQ(json::parse(result.body())["format"], "radiant-result/1");
 }
 
-TEST(Router, RunningResultIsAProgressSnapshot) {
-    Service s;
+TEST_P(RouterTest, RunningResultIsAProgressSnapshot) {
+    Service s(store());
     const std::string id = id_of(s.post(radiant::test::slow_room()));
     ASSERT_EQ(s.wait_for(id, "running")["status"], "running");
     const json doc = json::parse(s.get("/v1/jobs/" + id + "/result").body());
@@ -338,8 +346,8 @@ TEST(Router, RunningResultIsAProgressSnapshot) {
     EXPECT_FALSE(stopped.contains("progress"));
 }
 
-TEST(Router, IdempotencyKeyReturnsTheSameJob) {
-    Service s;
+TEST_P(RouterTest, IdempotencyKeyReturnsTheSameJob) {
+    Service s(store());
     const std::string a = id_of(s.post(radiant::test::tiny_room(), "key-1"));
     const std::string b = id_of(s.post(radiant::test::tiny_room(), "key-1"));
     const std::string c = id_of(s.post(radiant::test::tiny_room(), "key-2"));
@@ -347,8 +355,8 @@ TEST(Router, IdempotencyKeyReturnsTheSameJob) {
     EXPECT_NE(a, c);
 }
 
-TEST(Router, ListIsNewestFirstAndPaged) {
-    Service s;
+TEST_P(RouterTest, ListIsNewestFirstAndPaged) {
+    Service s(store());
     std::vector<std::string> ids;
     for (int i = 0; i < 3; ++i) ids.push_back(id_of(s.post(radiant::test::tiny_room())));
     const json first = json::parse(s.get("/v1/jobs?limit=2").body());
@@ -365,20 +373,20 @@ TEST(Router, ListIsNewestFirstAndPaged) {
     for (const std::string& id : ids) s.wait_for(id, "done");
 }
 
-TEST(Router, ShuttingDownIs503) {
-    Service s;
+TEST_P(RouterTest, ShuttingDownIs503) {
+    Service s(store());
     s.jobs().shutdown();
     const Response r = s.post(radiant::test::tiny_room());
     EXPECT_EQ(r.result(), http::status::service_unavailable);
     EXPECT_EQ(json::parse(r.body())["error"]["code"], "shutting_down");
-    EXPECT_EQ(s.get("/healthz").result(), http::status::service_unavailable);
+    EXPECT_EQ(s.get("/healthz").result(), http::status::ok) << "alive while it stops";
     const Response ready = s.get("/readyz");
     EXPECT_EQ(ready.result(), http::status::service_unavailable);
     EXPECT_EQ(json::parse(ready.body())["error"]["code"], "shutting_down");
 }
 
-TEST(Router, ReadyWhileTheStoreTakesWrites) {
-    Service s;
+TEST_P(RouterTest, ReadyWhileTheStoreTakesWrites) {
+    Service s(store());
     const Response r = s.get("/readyz");
     EXPECT_EQ(r.result(), http::status::ok);
     EXPECT_EQ(json::parse(r.body())["status"], "ready");
@@ -400,8 +408,8 @@ TEST(Router, AReplicaNameLabelsEveryMetric) {
     EXPECT_EQ(Metrics().render({}, 0).find("replica="), std::string::npos);
 }
 
-TEST(Router, HealthAndMetrics) {
-    Service s;
+TEST_P(RouterTest, HealthAndMetrics) {
+    Service s(store());
     EXPECT_EQ(s.get("/healthz").result(), http::status::ok);
     s.metrics().count_request(200);
     const std::string text = s.get("/metrics").body();
@@ -412,8 +420,8 @@ TEST(Router, HealthAndMetrics) {
     }
 }
 
-TEST(Router, EventsStartAStreamForKnownJobs) {
-    Service s;
+TEST_P(RouterTest, EventsStartAStreamForKnownJobs) {
+    Service s(store());
     const std::string id = id_of(s.post(radiant::test::tiny_room()));
     RouteResult r = s.call(http::verb::get, "/v1/jobs/" + id + "/events");
     ASSERT_TRUE(r.events);
@@ -422,26 +430,36 @@ TEST(Router, EventsStartAStreamForKnownJobs) {
     s.wait_for(id, "done");
 }
 
-TEST(JobQueue, UnfinishedJobsRunAgainAfterRestart) {
+using JobQueueTest = RouterTest;
+INSTANTIATE_TEST_SUITE_P(Stores, JobQueueTest, radiant::test::both_stores(),
+                         radiant::test::store_name);
+
+TEST_P(JobQueueTest, UnfinishedJobsRunAgainAfterRestart) {
     const fs::path dir =
         fs::temp_directory_path() / ("radiant_requeue_test_" + std::to_string(getpid()));
     fs::remove_all(dir);
+    fs::create_directories(dir);
     JobRecord job;
     job.id = new_job_id();
     job.scene_json = radiant::test::tiny_room();
     job.created = now_millis();
     {
-        SqliteJobStore store(dir);
-        store.insert(job);
-        store.mark_running(job.id, now_millis());  // as if the process died mid-solve
+        // As if the process died mid-solve (on a shared store, under a lease that ends at once).
+        const std::unique_ptr<JobStore> died = store().open(dir);
+        died->insert(job);
+        if (died->shared()) {
+            ASSERT_TRUE(died->claim("died", std::chrono::milliseconds(1), kMaxJobAttempts));
+        } else {
+            died->mark_running(job.id, now_millis());
+        }
         JobProgress seen;
         seen.sequence = 50;  // event ids a client may have seen
-        store.save_progress(job.id, seen);
+        died->save_progress(job.id, seen);
     }
     {
-        SqliteJobStore store(dir);
+        const std::unique_ptr<JobStore> restarted = store().open(dir);
         Metrics metrics;
-        JobQueue queue(store, metrics, {});
+        JobQueue queue(*restarted, metrics, {});
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
         while (queue.find(job.id)->status != JobStatus::done &&
                std::chrono::steady_clock::now() < deadline) {
@@ -451,7 +469,7 @@ TEST(JobQueue, UnfinishedJobsRunAgainAfterRestart) {
         // The new run's event ids continue above the old ones.
         EXPECT_GT(queue.find(job.id)->progress.sequence, 1000050u);
         EXPECT_GT(queue.snapshot(job.id)->info().mesh_event_id, 1000050u);
-        EXPECT_TRUE(store.result(job.id).has_value());
+        EXPECT_TRUE(restarted->result(job.id).has_value());
     }
     fs::remove_all(dir);
 }
@@ -464,8 +482,8 @@ Request scene_request(const std::string& body, const std::map<std::string, std::
     return request;
 }
 
-TEST(Router, SceneNeedsTheJsonContentType) {
-    Service s;
+TEST_P(RouterTest, SceneNeedsTheJsonContentType) {
+    Service s(store());
     for (const char* type : {"", "text/plain", "application/x-www-form-urlencoded"}) {
         std::map<std::string, std::string> headers;
         if (*type) headers["Content-Type"] = type;
@@ -479,20 +497,25 @@ TEST(Router, SceneNeedsTheJsonContentType) {
     EXPECT_EQ(ok.result(), http::status::accepted) << ok.body();
 }
 
-TEST(Router, InvalidUtf8Is400WithAPointerNot500) {
-    Service s;
+TEST_P(RouterTest, InvalidUtf8Is400WithAPointerNot500) {
+    Service s(store());
     const Response body = s.post("{\"format\": \"radiant-scene/1\", \"name\": \"\xff\xfe\"}");
     ASSERT_EQ(body.result(), http::status::bad_request) << body.body();
     const json error = json::parse(body.body())["error"];
     EXPECT_EQ(error["code"], "invalid_json");
     EXPECT_EQ(error["pointer"], "/name");
+    for (const std::string& key : {std::string("\xff\xfe"), std::string(201, 'k')}) {
+        const Response refused = s.post(radiant::test::tiny_room(), key);
+        EXPECT_EQ(refused.result(), http::status::bad_request) << refused.body();
+        EXPECT_EQ(json::parse(refused.body())["error"]["code"], "bad_request");
+    }
     const Response path = s.get("/v1/jobs/\xff\xfe");
     EXPECT_EQ(path.result(), http::status::not_found) << "the id is quoted, not thrown on";
     EXPECT_TRUE(json::accept(path.body()));
 }
 
-TEST(Router, OverTheJsonBudgetIs413WithAPointer) {
-    Service s({}, 64u << 20);
+TEST_P(RouterTest, OverTheJsonBudgetIs413WithAPointer) {
+    Service s(store(), {}, 64u << 20);
     const Response r = s.post(std::string(1'000'000, '['));
     ASSERT_EQ(r.result(), http::status::payload_too_large) << r.body();
     const json error = json::parse(r.body())["error"];
@@ -501,8 +524,8 @@ TEST(Router, OverTheJsonBudgetIs413WithAPointer) {
     EXPECT_FALSE(error["pointer"].get<std::string>().empty());
 }
 
-TEST(Router, TokenIsNeededOnEveryRouteButHealthz) {
-    Service s;
+TEST_P(RouterTest, TokenIsNeededOnEveryRouteButHealthz) {
+    Service s(store());
     s.context().access.token = "s3cret-token";
     for (const char* target : {"/v1/jobs", "/metrics", "/v1/jobs/x", "/nowhere"}) {
         const Response r = s.get(target);
@@ -526,8 +549,8 @@ TEST(Router, TokenIsNeededOnEveryRouteButHealthz) {
     EXPECT_EQ(accepted.result(), http::status::accepted) << accepted.body();
 }
 
-TEST(Router, ForeignHostsAreRefusedAgainstDnsRebinding) {
-    Service s;
+TEST_P(RouterTest, ForeignHostsAreRefusedAgainstDnsRebinding) {
+    Service s(store());
     Request request{http::verb::get, "/v1/jobs", 11};
     for (const char* host : {"localhost:8080", "127.0.0.1:8080", "[::1]:8080", "LOCALHOST"}) {
         request.set(http::field::host, host);
@@ -547,8 +570,8 @@ TEST(Router, ForeignHostsAreRefusedAgainstDnsRebinding) {
     EXPECT_EQ(s.send(request).result(), http::status::ok) << "the listen address";
 }
 
-TEST(Router, CrossOriginBrowserRequestsNeedAnAllowedOrigin) {
-    Service s;
+TEST_P(RouterTest, CrossOriginBrowserRequestsNeedAnAllowedOrigin) {
+    Service s(store());
     const auto post_from = [&](const char* origin) {
         return s.send(
             scene_request(radiant::test::tiny_room(), {{"Content-Type", "application/json"},
@@ -596,8 +619,8 @@ std::string mistake(const std::string& name, const json& settings = json::object
     return scene.dump();
 }
 
-TEST(Router, StrictSceneWithWarningsIs400WithTheirPointersAndQueuesNothing) {
-    Service s;
+TEST_P(RouterTest, StrictSceneWithWarningsIs400WithTheirPointersAndQueuesNothing) {
+    Service s(store());
     const Response r = s.post(mistake("luminaire-above-ceiling.json", {{"strict", true}}));
     ASSERT_EQ(r.result(), http::status::bad_request) << r.body();
     const json error = json::parse(r.body())["error"];
@@ -612,8 +635,8 @@ TEST(Router, StrictSceneWithWarningsIs400WithTheirPointersAndQueuesNothing) {
               http::status::accepted);
 }
 
-TEST(Router, JobsAndResultsCarryTheWarnings) {
-    Service s;
+TEST_P(RouterTest, JobsAndResultsCarryTheWarnings) {
+    Service s(store());
     const std::string warned =
         id_of(s.post(mistake("ceiling-wound-wrong.json", {{"tolerance", 0.1}})));
     const std::string clean = id_of(s.post(radiant::test::tiny_room()));
@@ -633,8 +656,8 @@ TEST(Router, JobsAndResultsCarryTheWarnings) {
     EXPECT_EQ((*stored)["warnings"], job["warnings"]);
 }
 
-TEST(Router, AStrictSolveThatEndsWithAWarningFails) {
-    Service s;
+TEST_P(RouterTest, AStrictSolveThatEndsWithAWarningFails) {
+    Service s(store());
     const std::string id =
         id_of(s.post(radiant::test::tiny_room(R"({"tolerance": 0.001, "max_seconds": 0.05,
                                                   "strict": true})")));

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "daemon.h"
 #include "radiant/server/config.h"
 #include "radiant/server/router.h"
+#include "store_under_test.h"
 
 namespace {
 
@@ -30,9 +32,8 @@ void write(const fs::path& file, const std::string& text) {
 class WebRoot : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("radiant_static_test_" + std::to_string(getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir_ = fs::temp_directory_path() / ("radiant_static_test_" + std::to_string(getpid()) +
+                                            "_" + radiant::test::test_file_name());
         fs::remove_all(dir_);
         root_ = dir_ / "web";
         write(root_ / "index.html", "<!doctype html><title>viewer</title>");
@@ -135,11 +136,26 @@ TEST_F(WebRoot, WithoutAViewerEveryPathIs404) {
     EXPECT_EQ(StaticFiles(dir_ / "nowhere").serve(request, "/").result(), http::status::not_found);
 }
 
-/// radiantd itself: the raw request targets go through Beast's parser and the router untouched.
-TEST_F(WebRoot, TheDaemonServesTheViewerAndNothingElse) {
+/// radiantd itself, on each store.
+class WebRootDaemon : public WebRoot, public ::testing::WithParamInterface<std::string> {
+protected:
+    void SetUp() override {
+        const std::string skip = radiant::test::StoreUnderTest::skip_reason(GetParam());
+        if (!skip.empty()) GTEST_SKIP() << skip;
+        WebRoot::SetUp();
+        store_.emplace(GetParam());
+    }
+    std::optional<radiant::test::StoreUnderTest> store_;
+};
+INSTANTIATE_TEST_SUITE_P(Stores, WebRootDaemon, radiant::test::both_stores(),
+                         radiant::test::store_name);
+
+/// The raw request targets go through Beast's parser and the router untouched.
+TEST_P(WebRootDaemon, TheDaemonServesTheViewerAndNothingElse) {
     using boost::beast::http::verb;
     using radiant::test::http_call;
-    radiant::test::Daemon d(dir_ / "data", {"--web-root", root_.string()}, dir_ / "radiantd.log");
+    radiant::test::Daemon d(dir_ / "data", store_->daemon_flags({"--web-root", root_.string()}),
+                            dir_ / "radiantd.log");
     const auto index = http_call(d.port(), verb::get, "/");
     EXPECT_EQ(index.status, 200u);
     EXPECT_EQ(index.headers.at("Content-Type"), "text/html; charset=utf-8");

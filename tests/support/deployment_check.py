@@ -3,7 +3,8 @@
 Docker engine or cluster runs: every radiantd flag and RADIANT_* variable they use exists in
 `radiantd --help`; the replicas share one PostgreSQL store under distinct names; the proxy sends
 to every replica; the Kubernetes probes, Secret, Service and ports agree; and each probe path
-answers 200 on a running radiantd (--port), asked with the probe's own Host header.
+answers 200 on a running radiantd (--port), asked with the probe's own Host header; and each
+platform waits longer after SIGTERM than radiantd drains (--drain-seconds) before it kills.
 
 Usage: deployment_check.py --radiantd BIN --docker DIR --port PORT. Prints each problem; exit 1
 if there is any."""
@@ -27,8 +28,25 @@ def check(condition, message):
 
 
 def radiantd_interface(binary):
+    """radiantd's flags, its RADIANT_* variables, and its default --drain-seconds."""
     text = subprocess.run([binary, "--help"], capture_output=True, text=True, check=True).stdout
-    return set(re.findall(r"(--[a-z][a-z-]*)", text)), set(re.findall(r"Env:(RADIANT_[A-Z_]+)", text))
+    drain = re.search(r"--drain-seconds [^\n]*?=([0-9.]+)", text)
+    return (set(re.findall(r"(--[a-z][a-z-]*)", text)),
+            set(re.findall(r"Env:(RADIANT_[A-Z_]+)", text)), float(drain.group(1)) if drain else 0)
+
+
+def drain_seconds(default, args):
+    """How long radiantd run with `args` drains after SIGTERM: the flag, else the default."""
+    args = [str(a) for a in args or []]
+    if "--drain-seconds" in args:
+        return float(args[args.index("--drain-seconds") + 1])
+    return default
+
+
+def check_grace(where, grace_seconds, drain):
+    """A platform that kills sooner than radiantd drains cuts a job's hand-back short."""
+    check(grace_seconds is not None and grace_seconds > drain,
+          f"{where}: waits {grace_seconds} s after SIGTERM, radiantd drains for {drain} s")
 
 
 def check_arguments(where, args, flags):
@@ -43,7 +61,15 @@ def check_environment(where, names, variables):
             check(name in variables, f"{where}: radiantd reads no variable {name}")
 
 
-def check_compose(docker, flags, variables, probes):
+def seconds(duration):
+    """A compose duration ("30s", "1m30s") in seconds; None when missing."""
+    if duration is None:
+        return None
+    parts = re.findall(r"([0-9.]+)(h|m|s|ms)", str(duration))
+    return sum(float(n) * {"h": 3600, "m": 60, "s": 1, "ms": 0.001}[u] for n, u in parts)
+
+
+def check_compose(docker, flags, variables, probes, drain):
     with open(os.path.join(docker, "compose.yaml")) as f:
         compose = yaml.safe_load(f)
     services = compose.get("services", {})
@@ -55,6 +81,8 @@ def check_compose(docker, flags, variables, probes):
         environment = service.get("environment", {})
         check_environment(where, environment, variables)
         check_arguments(where, service.get("command"), flags)
+        check_grace(where, seconds(service.get("stop_grace_period")),
+                    drain_seconds(drain, service.get("command")))
         store = str(environment.get("RADIANT_STORE", ""))
         check(store.startswith("postgresql://") and "@postgres/" in store,
               f"{where}: RADIANT_STORE is not the postgres service's database: {store}")
@@ -75,7 +103,7 @@ def check_compose(docker, flags, variables, probes):
           f"nginx.conf sends to {sorted(upstreams)}, the replicas are {sorted(replicas)}")
 
 
-def check_kubernetes(docker, flags, variables, probes):
+def check_kubernetes(docker, flags, variables, probes, drain):
     documents = []
     for path in sorted(glob.glob(os.path.join(docker, "k8s", "*.yaml"))):
         with open(path) as f:
@@ -93,6 +121,8 @@ def check_kubernetes(docker, flags, variables, probes):
           "k8s: the Deployment's selector does not match its pods' labels")
     container = deployment["spec"]["template"]["spec"]["containers"][0]
     check_arguments("k8s: radiantd", container.get("args"), flags)
+    check_grace("k8s: the Deployment", deployment["spec"]["template"]["spec"].get(
+        "terminationGracePeriodSeconds", 30), drain_seconds(drain, container.get("args")))
     environment = {e["name"]: e for e in container.get("env", [])}
     check_environment("k8s: radiantd", environment, variables)
     store = environment.get("RADIANT_STORE", {}).get("valueFrom", {}).get("secretKeyRef", {})
@@ -138,10 +168,10 @@ def main():
     parser.add_argument("--docker", required=True)
     parser.add_argument("--port", required=True, type=int)
     args = parser.parse_args()
-    flags, variables = radiantd_interface(args.radiantd)
+    flags, variables, drain = radiantd_interface(args.radiantd)
     probes = set()
-    check_compose(args.docker, flags, variables, probes)
-    check_kubernetes(args.docker, flags, variables, probes)
+    check_compose(args.docker, flags, variables, probes, drain)
+    check_kubernetes(args.docker, flags, variables, probes, drain)
     probe(args.port, probes)
     for p in problems:
         print(p)

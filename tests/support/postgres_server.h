@@ -1,10 +1,15 @@
-// A throw-away PostgreSQL cluster for tests: initdb of its own cluster in a temporary directory
-// and a server that listens only on a unix socket in that directory (no TCP port at all), stopped
-// and deleted with the object. Uses the Debian package's binaries (/usr/lib/postgresql/*/bin).
+// A throw-away PostgreSQL cluster for tests: its own cluster in a temporary directory and a
+// server that listens only on a unix socket in that directory (no TCP port at all), stopped and
+// deleted with the object. Uses the Debian package's binaries (/usr/lib/postgresql/*/bin). The
+// cluster is a copy of one that initdb made once per build (RADIANT_BIN_DIR/../postgres-template):
+// ctest runs each test case in a process of its own, and initdb costs a second where a copy
+// costs a fraction.
 #pragma once
 
+#include <fcntl.h>
 #include <libpq-fe.h>
 #include <pwd.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -49,17 +54,14 @@ public:
         // initdb refuses to run as root (CI runs as root): the cluster then belongs to the
         // package's `postgres` user.
         if (::geteuid() == 0) {
-            const passwd* user = ::getpwnam("postgres");
-            if (!user) throw std::runtime_error("running as root and there is no postgres user");
-            if (::chown(dir_.c_str(), user->pw_uid, user->pw_gid) != 0) {
-                throw std::runtime_error("cannot give " + dir_.string() + " to postgres");
+            if (!::getpwnam("postgres")) {
+                throw std::runtime_error("running as root and there is no postgres user");
             }
             as_user_ = "runuser -u postgres -- ";
+            give_to_server(dir_);
         }
         const std::string data = (dir_ / "data").string();
-        // --no-sync and fsync=off: a test cluster need not survive a power cut, and syncing
-        // costs seconds on a shared CI disk.
-        run("initdb -D " + data + " -U radiant -A trust -E UTF8 --no-locale --no-sync");
+        copy_template(data);
         run("pg_ctl -D " + data + " -l " + (dir_ / "server.log").string() +
             " -w -t 60 -o \"-c listen_addresses='' -k " + dir_.string() + " -p " + kPort +
             " -c fsync=off -c max_connections=50\" start");
@@ -131,6 +133,49 @@ public:
 
 private:
     static constexpr const char* kPort = "5432";  // only names the socket file in dir_
+
+    /// Copies the build's template cluster to `data`, making the template first if there is none
+    /// (one process at a time, under a lock; it appears whole, by a rename, or not at all).
+    void copy_template(const std::string& data) const {
+        namespace fs = std::filesystem;
+        const fs::path root = fs::path(RADIANT_BIN_DIR).parent_path() / "postgres-template";
+        const fs::path made = root / bin_.parent_path().filename();  // one per server version
+        fs::create_directories(root);
+        const int lock = ::open((root / "lock").c_str(), O_RDWR | O_CREAT, 0644);
+        if (lock < 0 || ::flock(lock, LOCK_EX) != 0)
+            throw std::runtime_error("cannot lock " + root.string());
+        try {
+            if (!fs::exists(made)) {
+                const fs::path building = root / "building";
+                fs::remove_all(building);
+                fs::create_directories(building);
+                give_to_server(building);
+                // --no-sync (and fsync=off at start): a test cluster need not survive a power
+                // cut, and syncing costs seconds on a shared CI disk.
+                run("initdb -D " + (building / "data").string() +
+                    " -U radiant -A trust -E UTF8 --no-locale --no-sync");
+                fs::rename(building / "data", made);
+                fs::remove_all(building);
+            }
+        } catch (...) {
+            ::close(lock);
+            throw;
+        }
+        ::close(lock);
+        // cp -a keeps the owner and the 0700 mode the server insists on.
+        if (std::system(("cp -a '" + made.string() + "' '" + data + "'").c_str()) != 0) {
+            throw std::runtime_error("cannot copy the template cluster " + made.string());
+        }
+    }
+
+    /// As root, initdb and the server run as `postgres`: `dir` must be theirs.
+    void give_to_server(const std::filesystem::path& dir) const {
+        if (as_user_.empty()) return;
+        const passwd* user = ::getpwnam("postgres");
+        if (!user || ::chown(dir.c_str(), user->pw_uid, user->pw_gid) != 0) {
+            throw std::runtime_error("cannot give " + dir.string() + " to postgres");
+        }
+    }
 
     void run(const std::string& command) const {
         const std::string log = (dir_ / "setup.log").string();

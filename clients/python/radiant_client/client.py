@@ -135,8 +135,8 @@ class Client:
         return f"Client({self.url!r})"
 
     def health(self) -> Dict[str, Any]:
-        """``GET /healthz``: ``{"status": "ok"}``; raises :class:`ServiceUnavailableError` while
-        the service shuts down, :class:`RadiantConnectionError` when it cannot be reached."""
+        """``GET /healthz``: ``{"status": "ok"}`` while the daemon is alive (its store may be down:
+        ``/readyz`` says that); raises :class:`RadiantConnectionError` when it cannot be reached."""
         return self._transport.json("GET", "/healthz")
 
     def metrics(self) -> str:

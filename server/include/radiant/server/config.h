@@ -18,6 +18,10 @@ struct ServerConfig {
     std::string replica;  ///< this process's name among those sharing a store (default host:pid)
     /// How long a shared store's job stays with a replica that stopped renewing its lease.
     double lease_seconds = 10;
+    /// After SIGTERM, how long running solves may go on before they are handed back to the
+    /// queue: most short solves end within it, and it stays below a container platform's grace
+    /// period (Kubernetes: 30 s) so that a hand-back never meets a SIGKILL.
+    double drain_seconds = 20;
     std::size_t workers = 1;       ///< concurrent solves; each one uses every core
     std::size_t queue_limit = 64;  ///< waiting jobs; bounded so memory and latency stay bounded
     /// Largest request body; the scene parser's own limit, so nothing bigger is ever buffered.

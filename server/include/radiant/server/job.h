@@ -55,6 +55,8 @@ struct JobRecord {
     /// The result's `warnings` (radiant-result/1): the scene's once its checks have run, all of
     /// them when the job has finished.
     nlohmann::json warnings = nlohmann::json::array();
+    /// The lease token of the claim that runs the job (JobStore::claim); 0 when no claim does.
+    std::int64_t lease_token = 0;
 };
 
 /// {id, status, progress, created, started, finished, warnings[, error]}: GET /v1/jobs/{id}.
@@ -62,5 +64,9 @@ nlohmann::json job_to_json(const JobRecord& job);
 
 /// A fresh random 128-bit id in hex. Thread-safe.
 std::string new_job_id();
+
+/// Whether `text` has the form of new_job_id()'s ids: anything else names no job, and never
+/// reaches a store (PostgreSQL refuses text that is not UTF-8 outright).
+bool is_job_id(std::string_view text);
 
 }  // namespace radiant::server

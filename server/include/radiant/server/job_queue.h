@@ -83,6 +83,7 @@ public:
     /// (the job runs here, or the store cannot tell). Thread-safe.
     std::optional<std::uint64_t> change_token(const std::string& id) const;
     /// Scene name and result digits of a running job (a finished one's are in its result).
+    /// On a shared store also of a job another process runs (its scene read once). Thread-safe.
     RunningScene running_scene(const std::string& id) const;
 
     /// Cancels: a queued job becomes cancelled at once; a running solve is asked to stop and
@@ -95,8 +96,15 @@ public:
     std::size_t queue_length() const;
     bool shutting_down() const;
 
-    /// Refuses new jobs, stops running solves without recording them as finished (so the next
-    /// process runs them again) and joins the workers. Idempotent.
+    /// A graceful stop (SIGTERM): refuses new jobs and takes no more from the queue, lets the
+    /// running solves go on for up to `deadline`, then shutdown() hands back those still running.
+    /// Returns once the workers are joined. Thread-safe; another thread may call shutdown()
+    /// meanwhile to cut the wait short.
+    void drain(std::chrono::milliseconds deadline);
+
+    /// Refuses new jobs, stops running solves and hands them back without counting the attempt
+    /// (queued again: on a shared store another process takes them at once, else the next
+    /// process runs them) and joins the workers. Idempotent.
     void shutdown();
 
 private:
@@ -135,13 +143,20 @@ private:
     mutable std::mutex mutex_;
     std::condition_variable wake_;           ///< workers: a job was queued, or shutdown
     std::condition_variable progress_wake_;  ///< the progress writer: shutdown
-    bool stopping_ = false;
+    std::condition_variable solved_;         ///< drain(): a solve ended, or shutdown
+    /// drain() began: no new job is accepted or started; running ones go on.
+    bool draining_ = false;
+    bool stopping_ = false;    ///< shutdown() began: running solves stop too
+    std::size_t solving_ = 0;  ///< workers inside run()
     std::deque<std::shared_ptr<LiveJob>> queue_;
     std::unordered_map<std::string, std::shared_ptr<LiveJob>> live_;  ///< queued or running
     /// Finished jobs whose final state the store refused (disk full); without their results.
     std::unordered_map<std::string, JobRecord> unstored_;
     /// Guarded by mutex_: remote_snapshot()'s latest, by job id (at most kMaxRemoteSnapshots).
     mutable std::unordered_map<std::string, std::shared_ptr<const JobSnapshot>> remote_snapshots_;
+    /// Guarded by mutex_: running_scene() of jobs other processes run (at most
+    /// kMaxRemoteSnapshots), so that each poll of their result does not parse the scene again.
+    mutable std::unordered_map<std::string, RunningScene> remote_scenes_;
     std::vector<std::thread> workers_;  ///< solvers and the progress writer
     std::string replica_;               ///< owner name in the shared store's leases
 };

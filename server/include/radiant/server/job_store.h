@@ -57,6 +57,14 @@ struct LeaseRenewal {
     bool cancel_requested = false;  ///< a cancel accepted by any replica
 };
 
+/// Which claim of a job a write comes from: claim() gives each claim a new, greater token. A
+/// store refuses the writes of a run (progress, warnings, snapshot, outcome, hand-back,
+/// heartbeat) whose token is no longer the job's, i.e. after its lease expired and another
+/// claim took the job: a replica cut off from the store cannot overwrite the new owner's work.
+using LeaseToken = std::int64_t;
+/// A write that belongs to no claim (the single-process queue, a cancel of a queued job).
+inline constexpr LeaseToken kUnfenced = 0;
+
 /// The error a job gets when its solve was started `max_attempts` times and never finished.
 std::string attempts_exhausted_error(int max_attempts);
 
@@ -82,19 +90,22 @@ public:
     /// is held for the life of this process (no lease: the single-process queue's way).
     virtual void mark_running(const std::string& id, UnixMillis started) = 0;
     /// A running job that a clean shutdown stopped goes back to queued, its attempt uncounted.
-    virtual void release(const std::string& id) = 0;
+    virtual void release(const std::string& id, LeaseToken lease = kUnfenced) = 0;
     /// Records that a cancel was accepted, before the answer says so: a process that dies before
     /// the solve stops leaves the job cancelled, not queued again. No-op for finished jobs.
     virtual void request_cancel(const std::string& id) = 0;
-    virtual void save_progress(const std::string& id, const JobProgress& progress) = 0;
+    virtual void save_progress(const std::string& id, const JobProgress& progress,
+                               LeaseToken lease = kUnfenced) = 0;
     /// The job's warnings (a JSON array), as GET /v1/jobs/{id} reports them.
-    virtual void save_warnings(const std::string& id, const nlohmann::json& warnings) = 0;
+    virtual void save_warnings(const std::string& id, const nlohmann::json& warnings,
+                               LeaseToken lease = kUnfenced) = 0;
     /// Final state, progress and (optionally) the result document (without its mesh) and the
-    /// solved mesh, in one transaction.
-    virtual void finish(const std::string& id, JobStatus status, UnixMillis finished,
+    /// solved mesh, in one transaction. False, and nothing stored, when `lease` is fenced off.
+    virtual bool finish(const std::string& id, JobStatus status, UnixMillis finished,
                         const JobProgress& progress, const std::string& error,
                         const std::optional<std::string>& result_json,
-                        const std::optional<StoredMesh>& mesh = std::nullopt) = 0;
+                        const std::optional<StoredMesh>& mesh = std::nullopt,
+                        LeaseToken lease = kUnfenced) = 0;
     virtual std::optional<std::string> result(const std::string& id) const = 0;
     /// A finished job's final snapshot, as finish() stored it.
     virtual std::optional<StoredMesh> mesh(const std::string& id) const = 0;
@@ -104,7 +115,8 @@ public:
     /// values already (same values_event_id), only the info changes. Does nothing unless the job
     /// is running; finish() deletes it.
     virtual void save_snapshot(const std::string& id, const SnapshotInfo& info,
-                               const std::optional<std::string>& blob) = 0;
+                               const std::optional<std::string>& blob,
+                               LeaseToken lease = kUnfenced) = 0;
     /// What save_snapshot stored, if the job is still running; the blob is left empty when its
     /// values_event_id is `have_values_event_id` (the reader has those values already).
     virtual std::optional<StoredMesh> running_snapshot(
@@ -124,7 +136,8 @@ public:
 
     /// The shared queue: takes the oldest job that no live process holds (queued, or running
     /// under a lease that expired because its process died or was cut off) and makes it running
-    /// under `owner`'s lease for `lease`, its attempt counted and its scene included. A job taken
+    /// under `owner`'s lease for `lease`, its attempt counted, its scene and a new lease_token
+    /// included. A job taken
     /// back from an expired lease continues its event ids a million above the stored sequence.
     /// Before choosing, ends the expired jobs that must not run again: those with a cancel
     /// request end cancelled, those started `max_attempts` times end failed. Concurrent claims
@@ -133,9 +146,10 @@ public:
     virtual std::optional<JobRecord> claim(const std::string& owner,
                                            std::chrono::milliseconds lease, int max_attempts) = 0;
     /// The heartbeat of a running job: extends `owner`'s lease to `lease` from now, if `owner`
-    /// still holds it.
+    /// still holds it under `token`.
     virtual LeaseRenewal renew_lease(const std::string& id, const std::string& owner,
-                                     std::chrono::milliseconds lease) = 0;
+                                     std::chrono::milliseconds lease,
+                                     LeaseToken token = kUnfenced) = 0;
 
     /// Whether the store takes writes now, and why not.
     virtual StoreHealth health() = 0;

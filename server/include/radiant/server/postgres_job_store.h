@@ -26,7 +26,7 @@ class PostgresChangeFeed;
 class PostgresJobStore final : public JobStore {
 public:
     /// The schema this build writes; older schemas are migrated on open.
-    static constexpr int kSchemaVersion = 2;
+    static constexpr int kSchemaVersion = 3;
 
     /// Connects to `uri` (postgresql://user@host/db or key=value pairs, as libpq takes them),
     /// then creates or migrates the schema, one replica at a time. Throws StoreError when the
@@ -39,18 +39,22 @@ public:
     std::optional<JobRecord> find_by_idempotency_key(const std::string& key) const override;
     std::vector<JobRecord> list(std::size_t limit, const std::string& after) const override;
     void mark_running(const std::string& id, UnixMillis started) override;
-    void release(const std::string& id) override;
+    void release(const std::string& id, LeaseToken lease = kUnfenced) override;
     void request_cancel(const std::string& id) override;
-    void save_progress(const std::string& id, const JobProgress& progress) override;
-    void save_warnings(const std::string& id, const nlohmann::json& warnings) override;
-    void finish(const std::string& id, JobStatus status, UnixMillis finished,
+    void save_progress(const std::string& id, const JobProgress& progress,
+                       LeaseToken lease = kUnfenced) override;
+    void save_warnings(const std::string& id, const nlohmann::json& warnings,
+                       LeaseToken lease = kUnfenced) override;
+    bool finish(const std::string& id, JobStatus status, UnixMillis finished,
                 const JobProgress& progress, const std::string& error,
                 const std::optional<std::string>& result_json,
-                const std::optional<StoredMesh>& mesh = std::nullopt) override;
+                const std::optional<StoredMesh>& mesh = std::nullopt,
+                LeaseToken lease = kUnfenced) override;
     std::optional<std::string> result(const std::string& id) const override;
     std::optional<StoredMesh> mesh(const std::string& id) const override;
     void save_snapshot(const std::string& id, const SnapshotInfo& info,
-                       const std::optional<std::string>& blob) override;
+                       const std::optional<std::string>& blob,
+                       LeaseToken lease = kUnfenced) override;
     std::optional<StoredMesh> running_snapshot(const std::string& id,
                                                std::uint64_t have_values_event_id) const override;
     /// From LISTEN/NOTIFY (PostgresChangeFeed), on a second connection opened by the first call.
@@ -61,7 +65,8 @@ public:
     std::optional<JobRecord> claim(const std::string& owner, std::chrono::milliseconds lease,
                                    int max_attempts) override;
     LeaseRenewal renew_lease(const std::string& id, const std::string& owner,
-                             std::chrono::milliseconds lease) override;
+                             std::chrono::milliseconds lease,
+                             LeaseToken token = kUnfenced) override;
     /// Unwritable while the server cannot be reached or refuses writes.
     StoreHealth health() override;
     bool shared() const override { return true; }

@@ -38,18 +38,22 @@ public:
     std::optional<JobRecord> find_by_idempotency_key(const std::string& key) const override;
     std::vector<JobRecord> list(std::size_t limit, const std::string& after) const override;
     void mark_running(const std::string& id, UnixMillis started) override;
-    void release(const std::string& id) override;
+    void release(const std::string& id, LeaseToken lease = kUnfenced) override;
     void request_cancel(const std::string& id) override;
-    void save_progress(const std::string& id, const JobProgress& progress) override;
-    void save_warnings(const std::string& id, const nlohmann::json& warnings) override;
-    void finish(const std::string& id, JobStatus status, UnixMillis finished,
+    void save_progress(const std::string& id, const JobProgress& progress,
+                       LeaseToken lease = kUnfenced) override;
+    void save_warnings(const std::string& id, const nlohmann::json& warnings,
+                       LeaseToken lease = kUnfenced) override;
+    bool finish(const std::string& id, JobStatus status, UnixMillis finished,
                 const JobProgress& progress, const std::string& error,
                 const std::optional<std::string>& result_json,
-                const std::optional<StoredMesh>& mesh = std::nullopt) override;
+                const std::optional<StoredMesh>& mesh = std::nullopt,
+                LeaseToken lease = kUnfenced) override;
     std::optional<std::string> result(const std::string& id) const override;
     std::optional<StoredMesh> mesh(const std::string& id) const override;
     void save_snapshot(const std::string& id, const SnapshotInfo& info,
-                       const std::optional<std::string>& blob) override;
+                       const std::optional<std::string>& blob,
+                       LeaseToken lease = kUnfenced) override;
     std::optional<StoredMesh> running_snapshot(const std::string& id,
                                                std::uint64_t have_values_event_id) const override;
     /// Nothing: one process writes this store, and it holds the jobs it runs in memory.
@@ -62,7 +66,8 @@ public:
     std::optional<JobRecord> claim(const std::string& owner, std::chrono::milliseconds lease,
                                    int max_attempts) override;
     LeaseRenewal renew_lease(const std::string& id, const std::string& owner,
-                             std::chrono::milliseconds lease) override;
+                             std::chrono::milliseconds lease,
+                             LeaseToken token = kUnfenced) override;
     /// Unwritable from a failed write until a write that adds rows succeeds, or the disk (and
     /// max_bytes) has room for results again.
     StoreHealth health() override;
@@ -90,10 +95,10 @@ private:
     /// holds mutex_ in a transaction.
     void end_dead_jobs(const std::string& dead, UnixMillis now, int max_attempts,
                        UnfinishedJobs& out);
-    void finish_locked(const std::string& id, JobStatus status, UnixMillis finished,
+    bool finish_locked(const std::string& id, JobStatus status, UnixMillis finished,
                        const JobProgress& progress, const std::string& error,
                        const std::optional<std::string>& result_json,
-                       const std::optional<StoredMesh>& mesh);
+                       const std::optional<StoredMesh>& mesh, LeaseToken lease);
     const std::filesystem::path data_dir_;
     /// Upgrades a store written by an older radiantd in place.
     void add_column_if_missing(const char* table, const char* column, const char* definition) const;
