@@ -30,7 +30,8 @@ public:
             source(scene_.luminaires[i].design, at("/luminaires", i));
         for (const Material& m : scene_.materials) {
             if (m.emission)
-                source(m.emission->design, "/materials/" + escape_pointer_token(m.name) + "/emission");
+                source(m.emission->design,
+                       "/materials/" + escape_pointer_token(m.name) + "/emission");
         }
         if (scene_.settings.maintenance_factor)
             factor(*scene_.settings.maintenance_factor, "/settings/maintenance_factor");
