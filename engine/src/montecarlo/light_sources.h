@@ -58,11 +58,11 @@ public:
                                  const Visibility& visibility, bool with_luminaires,
                                  std::uint64_t& rays) const;
 
-    /// One sample of the light of `sources`' emitting pieces (exact factors, `samples`
-    /// visibility points each) and clusters (one source each, drawn by power; its bound keeps
-    /// the sample small) at x with unit normal n: lux, per channel.
+    /// One sample of the light of `sources`' emitting pieces (in parts, see piece_part) and
+    /// clusters (one source each, drawn by power; its bound keeps the sample small) at x with
+    /// unit normal n: lux, per channel.
     Rgb sensor_set_light(const SensorSources& sources, const Vec3& x, const Vec3& n,
-                         const Visibility& visibility, SampleStream& rng, int samples,
+                         const Visibility& visibility, SampleStream& rng,
                          std::uint64_t& rays) const;
 
 private:
@@ -82,14 +82,17 @@ private:
     double rough_light(std::size_t s, const Vec3& x, const Vec3& n) const;
     Vec3 point_on(const EmittingPiece& e, double r1, double r2, double r3) const;
     Vec3 luminaire_direction(std::size_t luminaire, SampleStream& rng, double& weight) const;
-    /// Source s's light at x: a luminaire exactly, an emitting piece with `samples` points.
+    /// Source s's light at x: a luminaire exactly, an emitting piece by one point.
     Rgb part(std::size_t s, const Vec3& x, const Vec3& n, const Visibility& visibility,
-             SampleStream& rng, int samples, std::uint64_t& rays) const;
+             SampleStream& rng, std::uint64_t& rays) const;
     /// Luminaire i's light at x as `receiver` counts it, exactly (one shadow ray).
     Rgb luminaire_at(std::size_t i, const Vec3& x, const SensorReceiver& receiver,
                      const Visibility& visibility, std::uint64_t& rays) const;
+    /// An emitting piece's light at x: its exact factor times the visibility of one sampled
+    /// point, or `in_parts`, the sum over its fan triangles' parts (split by midpoints
+    /// until small as seen from x) of each part's exact factor times one sampled visibility.
     Rgb piece_part(const EmittingPiece& e, const Vec3& x, const Vec3& n,
-                   const Visibility& visibility, SampleStream& rng, int samples,
+                   const Visibility& visibility, SampleStream& rng, bool in_parts,
                    std::uint64_t& rays) const;
 
     bool included(std::size_t luminaire) const {

@@ -12,8 +12,6 @@ namespace {
 
 constexpr int kStrata = 8;  // kStrata² = SensorGather::kRaysPerSet
 static_assert(kStrata * kStrata == SensorGather::kRaysPerSet);
-// Visibility points per emitting piece in each set at a sensor.
-constexpr int kPieceSamples = 4;
 constexpr std::uint64_t kSensorStream = 0x73656e736f72ull, kEyeStream = 0x657965ull;
 constexpr int kBatches = PhotonField::kBatches;
 
@@ -85,10 +83,9 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
         // one per ray in strata turned by a random offset (any offset covers every stratum).
         const Vec3 set_normal = fixed ? fixed_normal : receiver.normal_at(rng.next());
         const int offset = fixed ? 0 : static_cast<int>(rng.next() * kRaysPerSet);
-        double direct =
-            photometric(sources_.sensor_set_light(point.sources, point.position, set_normal,
-                                                  visibility_, rng, kPieceSamples, rays),
-                        channels);
+        double direct = photometric(sources_.sensor_set_light(point.sources, point.position,
+                                                              set_normal, visibility_, rng, rays),
+                                    channels);
         double reflected = 0;
         for (int k = 0; k < kRaysPerSet; ++k) {
             const Vec3 normal =

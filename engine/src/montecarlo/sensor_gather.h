@@ -1,9 +1,9 @@
 // Sensor illuminance by final gather over the photon field: the luminaires' light exactly (one
-// shadow ray each), the emitting surfaces' by exact factors times sampled visibility (on a floor
-// of many rooms, those of the other rooms drawn as a few clusters of the light tree), and the
-// reflected light from sets of cosine-distributed rays. Where a ray lands, the light that point
-// reflects is its direct light found there (next-event estimation) plus the photon field's
-// indirect irradiance on the element. The rays and the direct light are kept, so a denser
+// shadow ray each), the emitting surfaces' by the exact factors of their parts times sampled
+// visibility (on a floor of many rooms, those of the other rooms drawn as a few clusters of the
+// light tree), and the reflected light from sets of cosine-distributed rays. Where a ray lands, the
+// light that point reflects is its direct light found there (next-event estimation) plus the photon
+// field's indirect irradiance on the element. The rays and the direct light are kept, so a denser
 // photon field re-prices them without casting them again.
 //
 // Each point's error has three parts, all measured from the data:
