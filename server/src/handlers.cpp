@@ -279,10 +279,14 @@ Response list_jobs(ServiceContext& ctx, const Request& request, const Query& que
     return json_response(request, http::status::ok, body);
 }
 
-Response healthz(const Request& request) {
-    // Liveness only: the process is up and its I/O threads answer. A store that is down or full
-    // is /readyz's to report; a restart would not bring it back.
-    return json_response(request, http::status::ok, {{"status", "ok"}});
+Response healthz(ServiceContext& ctx, const Request& request) {
+    // Liveness: the process is up and its I/O threads answer, so 200 whatever the store's state
+    // (a restart would not bring a store back; /readyz says whether to send traffic). The body
+    // says what the store's last write found, without asking it again.
+    const StoreHealth store = ctx.store.last_known_health();
+    nlohmann::json body = {{"status", "ok"}, {"store", store.writable ? "writable" : "unwritable"}};
+    if (!store.writable) body["store_reason"] = store.reason;
+    return json_response(request, http::status::ok, body);
 }
 
 Response readyz(ServiceContext& ctx, const Request& request) {

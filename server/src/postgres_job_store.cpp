@@ -194,6 +194,20 @@ void PostgresJobStore::connect() const {
 PostgresJobStore::Result PostgresJobStore::run(
     const std::string& sql, const std::vector<std::optional<std::string>>& params,
     const std::vector<bool>& binary) const {
+    try {
+        Result result = execute(sql, params, binary);
+        note_health({});
+        return result;
+    } catch (const StoreError& e) {
+        // A refused row (a constraint) says nothing of the store's health.
+        if (e.unwritable()) note_health({false, e.what()});
+        throw;
+    }
+}
+
+PostgresJobStore::Result PostgresJobStore::execute(
+    const std::string& sql, const std::vector<std::optional<std::string>>& params,
+    const std::vector<bool>& binary) const {
     connect();
     std::vector<const char*> values;
     std::vector<int> lengths;

@@ -106,7 +106,7 @@ RouteResult Router::dispatch(const Request& request) {
 
     if (parts.size() == 1 && parts[0] == "healthz") {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};
-        return {handlers::healthz(request), std::nullopt};
+        return {handlers::healthz(ctx_, request), std::nullopt};
     }
     if (parts.size() == 1 && parts[0] == "readyz") {
         if (!get) return {method_not_allowed(request, "GET"), std::nullopt};

@@ -332,9 +332,15 @@ void SqliteJobStore::write(Write&& write, bool adds_rows) {
         write();
         // Only a write that needed room proves there is room again: a row changed in place
         // fits even where no result would.
-        if (adds_rows) write_error_.clear();
+        if (adds_rows) {
+            write_error_.clear();
+            note_health({});
+        }
     } catch (const StoreError& e) {
-        if (e.unwritable()) write_error_ = e.what();
+        if (e.unwritable()) {
+            write_error_ = e.what();
+            note_health({false, write_error_});
+        }
         throw;
     }
 }
@@ -366,9 +372,12 @@ StoreHealth SqliteJobStore::health() {
     const std::size_t free = free_bytes();
     if (free >= kRecoveredFreeBytes) {
         write_error_.clear();
+        note_health({});
         return {};
     }
-    return {false, write_error_ + " (" + std::to_string(free / 1024) + " KiB free)"};
+    StoreHealth unwritable{false, write_error_ + " (" + std::to_string(free / 1024) + " KiB free)"};
+    note_health(unwritable);
+    return unwritable;
 }
 
 void SqliteJobStore::insert(const JobRecord& job) {

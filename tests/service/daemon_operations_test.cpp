@@ -157,7 +157,12 @@ TEST_P(DaemonOperationsTest, AFullStoreFailsJobsVisiblyAndReadinessSaysSo) {
     EXPECT_EQ(json::parse(ready.body)["error"]["code"], "store_unwritable") << ready.body;
     EXPECT_NE(json::parse(ready.body)["error"].value("message", "").find("full"), std::string::npos)
         << ready.body;
-    EXPECT_EQ(http_call(d.port(), verb::get, "/healthz").status, 200u);
+    // Alive, and its body says what the store's last write found.
+    const auto alive = http_call(d.port(), verb::get, "/healthz");
+    EXPECT_EQ(alive.status, 200u);
+    EXPECT_EQ(json::parse(alive.body)["store"], "unwritable") << alive.body;
+    EXPECT_NE(json::parse(alive.body).value("store_reason", "").find("full"), std::string::npos)
+        << alive.body;
 }
 
 TEST_P(DaemonOperationsTest, OutOfDescriptorsAcceptPausesAndRecovers) {

@@ -533,7 +533,9 @@ TEST_P(RouterTest, TokenIsNeededOnEveryRouteButHealthz) {
         EXPECT_EQ(json::parse(r.body())["error"]["code"], "unauthorized");
         EXPECT_EQ(r[http::field::www_authenticate], "Bearer realm=\"radiantd\"");
     }
-    EXPECT_EQ(s.get("/healthz").result(), http::status::ok);
+    const Response alive = s.get("/healthz");
+    EXPECT_EQ(alive.result(), http::status::ok);
+    EXPECT_EQ(json::parse(alive.body())["store"], "writable") << alive.body();
     EXPECT_EQ(s.get("/readyz").result(), http::status::ok) << "probes carry no token";
     Request wrong{http::verb::get, "/v1/jobs", 11};
     wrong.set(http::field::authorization, "Bearer s3cret-tokeN");

@@ -135,8 +135,10 @@ class Client:
         return f"Client({self.url!r})"
 
     def health(self) -> Dict[str, Any]:
-        """``GET /healthz``: ``{"status": "ok"}`` while the daemon is alive (its store may be down:
-        ``/readyz`` says that); raises :class:`RadiantConnectionError` when it cannot be reached."""
+        """``GET /healthz``: ``{"status": "ok", "store": "writable"}`` while the daemon is alive
+        (``"store": "unwritable"`` and ``store_reason`` after its store refused a write;
+        ``/readyz`` asks the store now); raises :class:`RadiantConnectionError` when it cannot be
+        reached."""
         return self._transport.json("GET", "/healthz")
 
     def metrics(self) -> str:

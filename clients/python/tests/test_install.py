@@ -31,7 +31,7 @@ class Install(unittest.TestCase):
                       "import radiant_client as r; print(r.__file__); print(r.Client().health())")
             where, health = out.splitlines()
             self.assertTrue(where.startswith(str(venv)), where)  # the installed copy
-            self.assertEqual(health, "{'status': 'ok'}")
+            self.assertEqual(health, "{'status': 'ok', 'store': 'writable'}")
             # Typed: the marker file is installed.
             self.assertTrue((Path(where).parent / "py.typed").is_file())
 

@@ -39,7 +39,7 @@ class Service(unittest.TestCase):
         cls.daemon.close()
 
     def test_health_jobs_and_metrics(self):
-        self.assertEqual(self.client.health(), {"status": "ok"})
+        self.assertEqual(self.client.health(), {"status": "ok", "store": "writable"})
         first = self.client.submit(tiny_room())
         second = self.client.submit(tiny_room())
         second.wait(timeout=60)
@@ -290,7 +290,7 @@ class Token(unittest.TestCase):
             token_file = Path(tmp) / "token"
             token_file.write_text("py-s3cret\n")
             with Daemon("--token-file", str(token_file)) as daemon:
-                self.assertEqual(Client(daemon.url).health(), {"status": "ok"})
+                self.assertEqual(Client(daemon.url).health(), {"status": "ok", "store": "writable"})
                 with self.assertRaises(HTTPError) as caught:
                     Client(daemon.url).submit(tiny_room())
                 self.assertEqual((caught.exception.status, caught.exception.code),

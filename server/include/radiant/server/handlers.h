@@ -75,8 +75,9 @@ Response cancel_job(ServiceContext& ctx, const Request& request, const std::stri
 /// groups, 400 with pointers for an unknown group or a dimming outside [0, 1].
 Response post_light_scene(ServiceContext& ctx, const Request& request, const std::string& id);
 Response list_jobs(ServiceContext& ctx, const Request& request, const Query& query);
-/// Liveness: 200 whenever the process answers, whatever the store and while it drains.
-Response healthz(const Request& request);
+/// Liveness: 200 whenever the process answers, whatever the store and while it drains; the
+/// body carries the store's last known state (`store`: writable or unwritable, and why).
+Response healthz(ServiceContext& ctx, const Request& request);
 /// Readiness for a load balancer: 200 while the store answers and takes writes, else 503 with
 /// an error (`shutting_down`, `store_unwritable` and the store's reason).
 Response readyz(ServiceContext& ctx, const Request& request);

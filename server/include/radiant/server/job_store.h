@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -153,10 +154,27 @@ public:
 
     /// Whether the store takes writes now, and why not.
     virtual StoreHealth health() = 0;
+    /// What the store's last write or query found, without asking it again (no I/O, no wait on
+    /// a slow store): what liveness may report.
+    StoreHealth last_known_health() const {
+        const std::lock_guard lock(known_mutex_);
+        return known_;
+    }
 
     /// True when other processes may use the store at the same time: then the queue lives in the
     /// store (claim, renew_lease), not in one process's memory.
     virtual bool shared() const = 0;
+
+protected:
+    /// Stores call this with each write's or query's outcome (see last_known_health).
+    void note_health(StoreHealth health) const {
+        const std::lock_guard lock(known_mutex_);
+        known_ = std::move(health);
+    }
+
+private:
+    mutable std::mutex known_mutex_;
+    mutable StoreHealth known_;
 };
 
 }  // namespace radiant::server

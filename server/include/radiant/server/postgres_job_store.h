@@ -77,9 +77,11 @@ public:
 private:
     class Result;
     /// Runs `sql` with text parameters ($1…); `binary` marks parameters sent as bytes (bytea).
-    /// The caller holds mutex_.
+    /// The caller holds mutex_. Notes the outcome for last_known_health.
     Result run(const std::string& sql, const std::vector<std::optional<std::string>>& params = {},
                const std::vector<bool>& binary = {}) const;
+    Result execute(const std::string& sql, const std::vector<std::optional<std::string>>& params,
+                   const std::vector<bool>& binary) const;
     /// Opens the connection when there is none or it broke; the caller holds mutex_.
     void connect() const;
     void migrate();
