@@ -576,7 +576,9 @@ void JobQueue::run(const std::shared_ptr<LiveJob>& job) {
         const std::lock_guard lock(job->mutex);
         if (outcome.ok()) job->scene = {outcome.scene->name, outcome.scene->settings.digits};
         job->record.status = JobStatus::running;
-        job->record.started = now_millis();
+        // A claim from a shared store set `started` by the store's clock, which every replica
+        // reports; this process's would differ by milliseconds.
+        if (!store_.shared()) job->record.started = now_millis();
     }
     // A claim from a shared store made the job running already, under this process's lease.
     if (!store_.shared()) store_.mark_running(id, job->copy().started);

@@ -139,6 +139,8 @@ TEST_F(ReplicasTest, ASigtermedReplicaHandsItsRunningJobToAnotherAtOnce) {
     ASSERT_EQ(wait_for(*a, id, "running")["status"], "running");
     ASSERT_EQ(query("SELECT lease_owner FROM jobs WHERE id = '" + id + "'")[0], "a");
     const std::unique_ptr<Daemon> b = start("b", "600", "0.5");
+    // Both report the start the claim stored (the database's clock), not a's own.
+    EXPECT_EQ(job(*a, id)["started"], job(*b, id)["started"]);
     EXPECT_EQ(a->stop(SIGTERM), 0) << "a drained past its deadline and stopped cleanly";
     EXPECT_EQ(wait_for(*b, id, "done", 30)["status"], "done");
     EXPECT_EQ(query("SELECT lease_owner FROM jobs WHERE id = '" + id + "'")[0], "");
