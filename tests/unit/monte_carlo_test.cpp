@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <variant>
 
 #include "montecarlo/element_mesh.h"
 #include "montecarlo/light_sources.h"
+#include "montecarlo/photon_field.h"
+#include "montecarlo/sensor_gather.h"
 #include "scene/prepared_scene.h"
 #include "scene_builder.h"
 #include "solve_with.h"
@@ -154,6 +157,41 @@ TEST(MonteCarlo, ReportsItsStages) {
     std::uint64_t rays = 0;
     for (const StageStats& s : r.stats.stages) rays += s.rays;
     EXPECT_EQ(rays, r.stats.rays);
+}
+
+// A point 3 mm beside the foot of a 1 m board that a white floor strip lights from below: the
+// board's foot reflects about 1.7 times its average light, and the point sees mostly its foot.
+// Read with elements as large as the board, it gets what it gets with elements of 5 cm, but for
+// what the one further bounce reads as an average (the strip is brighter beside the board: 0.4 %
+// here); an element's average light at every hit (the old gather) read 4.4 % less.
+TEST(SensorGather, APointBesideASurfaceReadsTheLightOfThatSpot) {
+    Scene scene;
+    scene.materials = {testing::gray("board", 0.5), testing::gray("white", 0.9),
+                       testing::gray("panel", 0, 1000)};
+    scene.surfaces = {
+        testing::polygon_surface("board", "board",
+                                 testing::rect({0, -0.5, 0}, {0, 1, 0}, {0, 0, 1})),
+        testing::polygon_surface("strip", "white",
+                                 testing::rect({0, -0.5, 0}, {1, 0, 0}, {0, 1, 0})),
+        testing::polygon_surface("panel", "panel", testing::ceiling_rect(0, 1, -0.5, 0.5, 2))};
+    scene.sensors.push_back(testing::sensor_points("beside", {{0.003, 0, 0.05}}));
+    const PreparedScene prepared = prepare_scene(scene);
+    const auto never = [] { return false; };
+    auto read = [&](double edge) {
+        const ElementMesh mesh(prepared, edge);
+        const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
+        const LightSources sources(prepared, visibility->epsilon());
+        PhotonField field(prepared, mesh, 5);
+        field.trace(1 << 22, sources, *visibility, never);
+        SensorGather gather(prepared, mesh, sources, *visibility, 7);
+        gather.gather(256, never);
+        return gather.evaluate(field).at(0);
+    };
+    const GatheredPoint coarse = read(1.5), fine = read(0.05);
+    const double spread = std::sqrt(coarse.gather_variance + coarse.photon_variance +
+                                    fine.gather_variance + fine.photon_variance);
+    EXPECT_LT(spread, 0.01 * fine.illuminance);
+    EXPECT_NEAR(coarse.illuminance, fine.illuminance, 4 * spread + 0.01 * fine.illuminance);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "geometry/cosine_direction.h"
 #include "parallel/fork_join.h"
@@ -14,6 +15,11 @@ constexpr int kStrata = 8;  // kStrata² = SensorGather::kRaysPerSet
 static_assert(kStrata * kStrata == SensorGather::kRaysPerSet);
 constexpr std::uint64_t kSensorStream = 0x73656e736f72ull, kEyeStream = 0x657965ull;
 constexpr int kBatches = PhotonField::kBatches;
+// A hit nearer than this many times its element's size sees light that varies across the
+// element (a desk's edge beside a stack of books): it is gathered one bounce further.
+constexpr double kNearHit = 1.0;
+
+Rgb times(const Rgb& a, const Rgb& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
 double sample_variance_of_mean(const double* values, int n) {
     if (n < 2) return 0;
@@ -39,22 +45,34 @@ SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
     if (which == Points::eyes) {
         for (const PreparedObserver& o : scene.observers) {
             points_.push_back(
-                {o.position, SensorReceiver(SensorKind::planar, o.view), true, {}, 0, {}, {}});
+                {o.position, SensorReceiver(SensorKind::planar, o.view), true, {}, 0, {}, {}, {}});
         }
         return;
     }
     for (const PreparedSensorSet& set : scene.sensors) {
         for (const Vec3& p : set.points)
-            points_.push_back({p, SensorReceiver(set.kind, set.normal), false, {}, 0, {}, {}});
+            points_.push_back({p, SensorReceiver(set.kind, set.normal), false, {}, 0, {}, {}, {}});
     }
 }
 
 std::size_t SensorGather::bytes_per_point() { return sizeof(Point); }
 
+std::size_t SensorGather::bytes_per_set() const {
+    std::size_t hits = 0, near = 0;
+    for (const Point& p : points_) {
+        hits += p.hits.size();
+        near += p.near.size();
+    }
+    const double share = hits > 0 ? static_cast<double>(near) / static_cast<double>(hits) : 1.0;
+    return sizeof(double) + kRaysPerSet * sizeof(int) +
+           static_cast<std::size_t>(std::ceil(share * kRaysPerSet * sizeof(NearHit)));
+}
+
 std::size_t SensorGather::memory_bytes() const {
     std::size_t bytes = points_.capacity() * sizeof(Point);
     for (const Point& p : points_) {
         bytes += p.set_direct.capacity() * sizeof(double) + p.hits.capacity() * sizeof(int) +
+                 p.near.capacity() * sizeof(NearHit) +
                  p.sources.pieces.capacity() * sizeof(std::size_t) +
                  p.sources.clusters.capacity() * sizeof(int);
     }
@@ -98,13 +116,37 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
             ++rays;
             const RayHit hit = visibility_.intersect(origin, d, t_max);
             const int side = hit.triangle < 0 ? -1 : mesh_.side_hit(hit.triangle, d);
-            point.hits.push_back(side);
-            if (side < 0) continue;
+            if (side < 0) {
+                point.hits.push_back(-1);
+                continue;
+            }
             const MeshElement& e = mesh_[static_cast<std::size_t>(hit.triangle)];
             const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
             const Vec3 n = mesh_.side_normal(side);
-            const Rgb h = sources_.direct_at(origin + d * hit.t, n, visibility_, rng, rays);
-            reflected += photometric(Rgb{rho[0] * h[0], rho[1] * h[1], rho[2] * h[2]}, channels);
+            const Vec3 x = origin + d * hit.t;
+            const Rgb h = sources_.direct_at(x, n, visibility_, rng, rays);
+            reflected += photometric(times(rho, h), channels);
+            if (hit.t >= kNearHit * std::sqrt(e.area_m2)) {
+                point.hits.push_back(side);
+                continue;
+            }
+            // Too near for the element's average light: one more bounce finds what lights
+            // this spot.
+            const Vec3 x1 = x + n * eps;
+            const Vec3 d2 = cosine_direction(n, rng.next(), rng.next());
+            ++rays;
+            const RayHit hit2 = visibility_.intersect(x1, d2, t_max);
+            const int side2 = hit2.triangle < 0 ? -1 : mesh_.side_hit(hit2.triangle, d2);
+            if (side2 >= 0) {
+                const MeshElement& e2 = mesh_[static_cast<std::size_t>(hit2.triangle)];
+                const Rgb& rho2 =
+                    scene_.materials[static_cast<std::size_t>(e2.material)].reflectance;
+                const Rgb h2 = sources_.direct_at(x1 + d2 * hit2.t, mesh_.side_normal(side2),
+                                                  visibility_, rng, rays);
+                reflected += photometric(times(rho, times(rho2, h2)), channels);
+            }
+            point.hits.push_back(-2 - static_cast<int>(point.near.size()));
+            point.near.push_back({side, side2});
         }
         point.set_direct.push_back(direct + reflected / kRaysPerSet);
     }
@@ -125,13 +167,17 @@ std::uint64_t SensorGather::gather(int sets, const std::function<bool()>& stop) 
 std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) const {
     const int channels = scene_.channels;
     const std::vector<ElementSide>& sides = mesh_.sides();
-    // The reflected indirect light of every side: ρ ⊙ H_ind, photometric.
-    std::vector<double> reflected(sides.size());
+    auto reflectance = [&](int side) -> const Rgb& {
+        const MeshElement& e =
+            mesh_[static_cast<std::size_t>(sides[static_cast<std::size_t>(side)].element)];
+        return scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
+    };
+    // The reflected indirect light of every side: ρ ⊙ H_ind, per channel and photometric.
+    std::vector<Rgb> reflected(sides.size());
+    std::vector<double> reflected_lux(sides.size());
     parallel_for(0, sides.size(), [&](std::size_t s) {
-        const MeshElement& e = mesh_[static_cast<std::size_t>(sides[s].element)];
-        const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
-        const Rgb h = field.indirect(static_cast<int>(s));
-        reflected[s] = photometric(Rgb{rho[0] * h[0], rho[1] * h[1], rho[2] * h[2]}, channels);
+        reflected[s] = times(reflectance(static_cast<int>(s)), field.indirect(static_cast<int>(s)));
+        reflected_lux[s] = photometric(reflected[s], channels);
     });
     // A side's twin at the coarser level: the same side of its sibling, or none.
     auto sibling_side = [&](int side) {
@@ -140,6 +186,12 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
         if (e.sibling < 0) return -1;
         const MeshElement& o = mesh_[static_cast<std::size_t>(e.sibling)];
         return s.back ? o.back : o.front;
+    };
+    auto area = [&](int side) {
+        return side < 0
+                   ? 0.0
+                   : mesh_[static_cast<std::size_t>(sides[static_cast<std::size_t>(side)].element)]
+                         .area_m2;
     };
     std::vector<GatheredPoint> out(points_.size());
     parallel_for(0, points_.size(), [&](std::size_t i) {
@@ -150,32 +202,46 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
         if (sets == 0) return;
         std::vector<double> set_value(static_cast<std::size_t>(sets));
         std::array<double, kBatches> batch{}, batch_coarse{};
-        double coarse = 0, fine_sum = 0;
+        double coarse = 0, fine_sum = 0, fine = 0;
+        // The field's light reflected at `side` toward the point; a near hit's, through the
+        // reflectance of the first surface (`first`, else none).
+        auto land = [&](int side, int first) {
+            const int twin = sibling_side(side);
+            const double a = area(side), b = area(twin);
+            // Never 0/0, even for a sliver whose area rounds to nothing.
+            const double wa = a + b > 0 ? a / (a + b) : 1.0, wb = 1 - wa;
+            double value = reflected_lux[static_cast<std::size_t>(side)];
+            double value_twin = twin < 0 ? value : reflected_lux[static_cast<std::size_t>(twin)];
+            double scale = 1;  // the batches' photometric tallies, through `first`
+            if (first >= 0) {
+                const Rgb& rho = reflectance(first);
+                const double through =
+                    photometric(times(rho, reflected[static_cast<std::size_t>(side)]), channels);
+                scale = value > 0 ? through / value : 0;
+                value = through;
+                value_twin =
+                    twin < 0 ? value
+                             : photometric(times(rho, reflected[static_cast<std::size_t>(twin)]),
+                                           channels);
+            }
+            fine += value;
+            coarse += wa * value + wb * value_twin;
+            for (int q = 0; q < kBatches; ++q) {
+                const double f = scale * field.batch_reflected(side, q);
+                batch[static_cast<std::size_t>(q)] += f;
+                batch_coarse[static_cast<std::size_t>(q)] +=
+                    twin < 0 ? f : wa * f + wb * scale * field.batch_reflected(twin, q);
+            }
+        };
         for (int j = 0; j < sets; ++j) {
-            double fine = 0;
+            fine = 0;
             for (int k = 0; k < kRaysPerSet; ++k) {
-                const int side = p.hits[static_cast<std::size_t>(j * kRaysPerSet + k)];
-                if (side < 0) continue;
-                fine += reflected[static_cast<std::size_t>(side)];
-                const int twin = sibling_side(side);
-                const double a =
-                    mesh_[static_cast<std::size_t>(sides[static_cast<std::size_t>(side)].element)]
-                        .area_m2;
-                const double b = twin < 0
-                                     ? 0.0
-                                     : mesh_[static_cast<std::size_t>(
-                                                 sides[static_cast<std::size_t>(twin)].element)]
-                                           .area_m2;
-                // Never 0/0, even for a sliver whose area rounds to nothing.
-                const double wa = a + b > 0 ? a / (a + b) : 1.0, wb = 1 - wa;
-                coarse += twin < 0 ? reflected[static_cast<std::size_t>(side)]
-                                   : wa * reflected[static_cast<std::size_t>(side)] +
-                                         wb * reflected[static_cast<std::size_t>(twin)];
-                for (int q = 0; q < kBatches; ++q) {
-                    const double f = field.batch_reflected(side, q);
-                    batch[static_cast<std::size_t>(q)] += f;
-                    batch_coarse[static_cast<std::size_t>(q)] +=
-                        twin < 0 ? f : wa * f + wb * field.batch_reflected(twin, q);
+                const int code = p.hits[static_cast<std::size_t>(j * kRaysPerSet + k)];
+                if (code >= 0) {
+                    land(code, -1);
+                } else if (code <= -2) {
+                    const NearHit& near = p.near[static_cast<std::size_t>(-2 - code)];
+                    if (near.second >= 0) land(near.second, near.first);
                 }
             }
             fine_sum += fine;

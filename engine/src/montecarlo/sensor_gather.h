@@ -3,8 +3,10 @@
 // visibility (on a floor of many rooms, those of the other rooms drawn as a few clusters of the
 // light tree), and the reflected light from sets of cosine-distributed rays. Where a ray lands, the
 // light that point reflects is its direct light found there (next-event estimation) plus the photon
-// field's indirect irradiance on the element. The rays and the direct light are kept, so a denser
-// photon field re-prices them without casting them again.
+// field's indirect irradiance on the element; a ray that lands nearer than its element's size (a
+// point beside a stack of books) bounces once more, as the element's average is not the light of
+// that spot. The rays and the direct light are kept, so a denser photon field re-prices them
+// without casting them again.
 //
 // Each point's error has three parts, all measured from the data:
 //   gather noise   the spread of its ray sets;
@@ -57,12 +59,19 @@ public:
     /// points.
     std::vector<GatheredPoint> evaluate(const PhotonField& field) const;
     std::size_t memory_bytes() const;
-    /// What one more ray set costs at one point.
-    static constexpr std::size_t kBytesPerSet = sizeof(double) + kRaysPerSet * sizeof(int);
-    /// What a point holds before any set, besides its two lists' heap blocks.
+    /// What one more ray set costs at one point: its value, its rays' landings, and the near
+    /// hits among them at the share seen so far (every ray, before any is cast).
+    std::size_t bytes_per_set() const;
+    /// What a point holds before any set, besides its three lists' heap blocks.
     static std::size_t bytes_per_point();
 
 private:
+    /// A ray that landed too near for its element's average light, and the side its one
+    /// further bounce landed on (or −1).
+    struct NearHit {
+        int first = 0;
+        int second = -1;
+    };
     struct Point {
         Vec3 position;
         SensorReceiver receiver;
@@ -70,7 +79,9 @@ private:
         LightSources::SensorSources sources;  ///< the light tree's cut at the point
         double luminaires = 0;                ///< photometric, exact
         std::vector<double> set_direct;  ///< per set: emitting pieces + mean ρ ⊙ E_direct(hit)
-        std::vector<int> hits;           ///< per ray, set by set: the side it landed on, or −1
+        /// per ray, set by set: the side it landed on, −1 for none, or −2 − i for near[i]
+        std::vector<int> hits;
+        std::vector<NearHit> near;
     };
     void gather_point(std::size_t index, Point& point, int sets, std::uint64_t& rays) const;
 

@@ -108,15 +108,15 @@ struct MonteCarloLevel {
 // for them, or as gathered so far.
 enum class RaySets { budgeted, gathered };
 std::size_t sets_bytes(const MonteCarloLevel& level, RaySets which) {
-    std::size_t sets = 0;
+    std::size_t bytes = 0;
     for (const auto& light : level.lights) {
         const bool budgeted = which == RaySets::budgeted;
-        sets += static_cast<std::size_t>(budgeted ? light->budget.sets : light->gather.sets()) *
-                    light->gather.points() +
-                static_cast<std::size_t>(budgeted ? light->eye_sets : light->eyes.sets()) *
-                    light->eyes.points();
+        bytes += static_cast<std::size_t>(budgeted ? light->budget.sets : light->gather.sets()) *
+                     light->gather.points() * light->gather.bytes_per_set() +
+                 static_cast<std::size_t>(budgeted ? light->eye_sets : light->eyes.sets()) *
+                     light->eyes.points() * light->eyes.bytes_per_set();
     }
-    return sets * SensorGather::kBytesPerSet;
+    return bytes;
 }
 
 // A display triangle: three vertices with their radiosity, its corners, surface and radiosity.
@@ -138,7 +138,7 @@ std::size_t level_bytes(const ElementCount& count, std::size_t points, std::size
         (count.elements * kDisplayBytesPerElement + count.sides * sizeof(SolvedElement));
     const std::size_t per_component =
         count.sides * PhotonField::kBytesPerSide +
-        points * (SensorGather::bytes_per_point() + 2 * kHeapBlockBytes + sizeof(GatheredPoint));
+        points * (SensorGather::bytes_per_point() + 3 * kHeapBlockBytes + sizeof(GatheredPoint));
     return count.elements * (sizeof(MeshElement) + kEmbreeBytesPerTriangle) +
            count.sides * sizeof(ElementSide) + components * per_component +
            PhotonField::wave_bytes(survival) + source_lists + std::max(build, display);
