@@ -152,8 +152,9 @@ nlohmann::json solve_case(const Scene& scene, const SolveOptions& options,
             {"estimate", number(result.stats.error_estimate)},
             {"stages", stage_summary(result.stats.stages)},
             {"estimate_parts", estimate_summary(result.stats.error_parts)},
-            {"sensor", result.sensors.empty() ? nlohmann::json(nullptr)
-                                              : nlohmann::json(result.sensors[0].illuminance)}};
+            {"sensor", result.sensors.empty()
+                           ? nlohmann::json(nullptr)
+                           : nlohmann::json(new_lamp_illuminance(result.sensors[0]))}};
 }
 
 double number_or_nan(const nlohmann::json& j) {

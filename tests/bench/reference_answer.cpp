@@ -55,6 +55,10 @@ RelativeError summarise(const std::vector<double>& errors) {
 
 }  // namespace
 
+const std::vector<double>& new_lamp_illuminance(const SensorResult& set) {
+    return set.initial ? set.initial->illuminance : set.illuminance;
+}
+
 RelativeError relative_error(const Result& result, const ReferenceAnswer& reference) {
     std::vector<double> errors;
     if (!reference.checks.is_null()) {
@@ -63,13 +67,15 @@ RelativeError relative_error(const Result& result, const ReferenceAnswer& refere
     }
     const auto* set = find_sensor(result, reference.sensor);
     const auto& want = reference.illuminance;
-    if (!set || set->illuminance.size() != want.size() || want.empty()) return {};
+    if (!set) return {};
+    const std::vector<double>& got = new_lamp_illuminance(*set);
+    if (got.size() != want.size() || want.empty()) return {};
     double mean = 0;
     for (const double v : want) mean += v;
     mean /= static_cast<double>(want.size());
     if (!(mean > 0)) return {};
     for (std::size_t i = 0; i < want.size(); ++i) {
-        errors.push_back(std::abs(set->illuminance[i] - want[i]) / mean);
+        errors.push_back(std::abs(got[i] - want[i]) / mean);
     }
     return summarise(errors);
 }

@@ -18,10 +18,10 @@
 namespace radiant::bench {
 
 struct ReferenceAnswer {
-    std::string source;     ///< "exact", "RADIANCE", "hierarchical 0.0005", …
-    nlohmann::json checks;  ///< expected.json checks; null when comparing sensors
-    std::string sensor;     ///< the sensor set compared point by point
-    std::vector<double> illuminance;
+    std::string source;               ///< "exact", "RADIANCE", "hierarchical 0.0005", …
+    nlohmann::json checks;            ///< expected.json checks; null when comparing sensors
+    std::string sensor;               ///< the sensor set compared point by point
+    std::vector<double> illuminance;  ///< new lamps (no maintenance factor)
 };
 
 struct RelativeError {
@@ -29,8 +29,12 @@ struct RelativeError {
     double max = std::numeric_limits<double>::quiet_NaN();
 };
 
-/// RMS and largest relative error of `result` against `reference`; NaN when a check or the
-/// sensor set is missing from the result.
+/// A sensor set's values for new lamps: its initial values where a maintenance factor applies.
+/// References and results are compared on these, as RADIANCE knows no maintenance factor.
+const std::vector<double>& new_lamp_illuminance(const SensorResult& set);
+
+/// RMS and largest relative error of `result` against `reference` (sensors: new-lamp values);
+/// NaN when a check or the sensor set is missing from the result.
 RelativeError relative_error(const Result& result, const ReferenceAnswer& reference);
 
 }  // namespace radiant::bench

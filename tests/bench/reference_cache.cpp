@@ -97,8 +97,9 @@ std::optional<CachedReference> ReferenceCache::find(const Scene& scene, double t
     if (ec || cached < engine) return std::nullopt;  // made by an older engine
     std::ifstream in(file);
     const auto doc = nlohmann::json::parse(in, nullptr, false);
-    if (doc.is_discarded() || !doc.contains("illuminance")) return std::nullopt;
-    return CachedReference{doc.at("illuminance").get<std::vector<double>>(),
+    // Entries that kept maintained values (before "new_lamp_illuminance") are made again.
+    if (doc.is_discarded() || !doc.contains("new_lamp_illuminance")) return std::nullopt;
+    return CachedReference{doc.at("new_lamp_illuminance").get<std::vector<double>>(),
                            doc.at("seconds").get<double>(), doc.at("error_estimate").get<double>()};
 }
 
@@ -110,7 +111,7 @@ void ReferenceCache::store(const Scene& scene, double tolerance,
     const fs::path partial = file.string() + ".partial";
     {
         std::ofstream out(partial);
-        out << nlohmann::json{{"illuminance", reference.illuminance},
+        out << nlohmann::json{{"new_lamp_illuminance", reference.illuminance},
                               {"seconds", reference.seconds},
                               {"error_estimate", reference.error_estimate}}
                    .dump();

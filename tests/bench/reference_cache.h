@@ -17,7 +17,7 @@ namespace radiant::bench {
 std::uint64_t scene_fingerprint(const Scene& scene);
 
 struct CachedReference {
-    std::vector<double> illuminance;  ///< of the scene's first sensor set
+    std::vector<double> illuminance;  ///< of the scene's first sensor set, new lamps
     double seconds = 0;
     double error_estimate = 0;
 };

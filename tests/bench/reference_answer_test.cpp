@@ -1,0 +1,40 @@
+// How radiant-bench scores a result against a reference of sensor values.
+#include "reference_answer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+
+namespace radiant::bench {
+namespace {
+
+Result result_with(std::vector<double> maintained, std::optional<std::vector<double>> initial) {
+    SensorResult set;
+    set.name = "work plane";
+    set.illuminance = std::move(maintained);
+    if (initial) set.initial = InitialValues{*initial};
+    Result r;
+    r.sensors.push_back(std::move(set));
+    return r;
+}
+
+// RADIANCE references are of new lamps: a maintained result (factor 0.8) is scored on its
+// initial values, not as 20 % off.
+TEST(ReferenceAnswer, ScoresTheLightOfNewLamps) {
+    const ReferenceAnswer reference{"RADIANCE", nullptr, "work plane", {100, 300}};
+    const RelativeError maintained =
+        relative_error(result_with({80, 240}, {{100, 300}}), reference);
+    EXPECT_DOUBLE_EQ(maintained.rms, 0);
+    const RelativeError off = relative_error(result_with({102, 300}, std::nullopt), reference);
+    EXPECT_DOUBLE_EQ(off.max, 2.0 / 200);
+    EXPECT_DOUBLE_EQ(off.rms, std::sqrt(0.01 * 0.01 / 2));
+}
+
+TEST(ReferenceAnswer, NothingToScoreWithoutTheSensorSet) {
+    const ReferenceAnswer reference{"RADIANCE", nullptr, "desk", {100}};
+    EXPECT_TRUE(std::isnan(relative_error(result_with({100}, std::nullopt), reference).rms));
+}
+
+}  // namespace
+}  // namespace radiant::bench
