@@ -149,7 +149,7 @@ nlohmann::json solve_case(const Scene& scene, const SolveOptions& options,
             {"links", result.stats.links},
             {"rms", number(error.rms)},
             {"max", number(error.max)},
-            {"estimate", number(result.stats.error_estimate)},
+            {"estimate", number(scored_estimate(result, reference))},
             {"stages", stage_summary(result.stats.stages)},
             {"estimate_parts", estimate_summary(result.stats.error_parts)},
             {"sensor", result.sensors.empty()

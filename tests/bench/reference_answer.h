@@ -33,6 +33,11 @@ struct RelativeError {
 /// References and results are compared on these, as RADIANCE knows no maintenance factor.
 const std::vector<double>& new_lamp_illuminance(const SensorResult& set);
 
+/// The error estimate of what `reference` scores: the sensor set's own where it has one (the
+/// result's is the worst of its sets', which a darker band beside the work plane may set), else
+/// the result's.
+double scored_estimate(const Result& result, const ReferenceAnswer& reference);
+
 /// RMS and largest relative error of `result` against `reference` (sensors: new-lamp values);
 /// NaN when a check or the sensor set is missing from the result.
 RelativeError relative_error(const Result& result, const ReferenceAnswer& reference);

@@ -31,6 +31,18 @@ TEST(ReferenceAnswer, ScoresTheLightOfNewLamps) {
     EXPECT_DOUBLE_EQ(off.rms, std::sqrt(0.01 * 0.01 / 2));
 }
 
+// The result's estimate is its worst set's; a row scores one set, so it shows that set's.
+TEST(ReferenceAnswer, ShowsTheEstimateOfTheSetItScores) {
+    Result r = result_with({100, 300}, std::nullopt);
+    r.stats.error_estimate = 0.025;  // a darker band's
+    const ReferenceAnswer reference{"RADIANCE", nullptr, "work plane", {100, 300}};
+    EXPECT_DOUBLE_EQ(scored_estimate(r, reference), 0.025);  // the set has none of its own
+    r.sensors[0].error_estimate = 0.01;
+    EXPECT_DOUBLE_EQ(scored_estimate(r, reference), 0.01);
+    const ReferenceAnswer checks{"exact", nlohmann::json::array(), "", {}};
+    EXPECT_DOUBLE_EQ(scored_estimate(r, checks), 0.025);
+}
+
 TEST(ReferenceAnswer, NothingToScoreWithoutTheSensorSet) {
     const ReferenceAnswer reference{"RADIANCE", nullptr, "desk", {100}};
     EXPECT_TRUE(std::isnan(relative_error(result_with({100}, std::nullopt), reference).rms));
