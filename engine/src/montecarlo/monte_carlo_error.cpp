@@ -1,7 +1,10 @@
 #include "montecarlo/monte_carlo_error.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+
+#include "montecarlo/sample_variance.h"
 
 namespace radiant {
 namespace {
@@ -12,6 +15,9 @@ namespace {
 // RMS averages it less than independent noise).
 constexpr double kGatherMargin = 1.5;
 constexpr double kPhotonMargin = 1.5;
+// The photon noise every point of a set shares (the field read the same everywhere) is one
+// draw, not an average over the set's points: its margin is a normal's two-sided 95 %.
+constexpr double kSharedPhotonMargin = 2;
 // A budget grows at most this much per round, so that a poor first variance cannot send the
 // solve far past its tolerance.
 constexpr double kMaxGrowth = 8;
@@ -30,11 +36,15 @@ std::vector<SetError> set_errors(const std::vector<GatheredPoint>& points,
     for (const std::size_t size : set_sizes) {
         SetError& set = out.emplace_back();
         double mean = 0, gather = 0, photon = 0, bias = 0;
+        std::array<double, PhotonField::kBatches> shared{};  // the set's mean, batch by batch
         for (std::size_t i = first; i < first + size; ++i) {
             mean += points[i].illuminance;
             gather += points[i].gather_variance;
             photon += points[i].photon_variance;
             bias += points[i].coarse_difference_squared - points[i].coarse_difference_variance;
+            for (int q = 0; q < PhotonField::kBatches; ++q)
+                shared[static_cast<std::size_t>(q)] +=
+                    points[i].photon_batches[static_cast<std::size_t>(q)];
         }
         first += size;
         if (size == 0 || !(mean > 0)) continue;
@@ -43,7 +53,16 @@ std::vector<SetError> set_errors(const std::vector<GatheredPoint>& points,
         set.mean = mean;
         MonteCarloError& e = set.error;
         e.parts.gather_noise = kGatherMargin * std::sqrt(gather / n) / mean;
-        e.parts.photon_noise = kPhotonMargin * std::sqrt(photon / n) / mean;
+        // The points' mean photon variance is the shared part's plus the rest's, which
+        // averages over the points.
+        for (double& v : shared) v /= n;
+        const double shared_variance =
+            sample_variance_of_mean(shared.data(), PhotonField::kBatches);
+        const double own_variance = std::max(0.0, photon / n - shared_variance);
+        e.parts.photon_noise =
+            std::sqrt(kPhotonMargin * kPhotonMargin * own_variance +
+                      kSharedPhotonMargin * kSharedPhotonMargin * shared_variance) /
+            mean;
         e.parts.discretisation = std::sqrt(std::max(0.0, bias) / n) / mean;
         e.total = std::sqrt(e.parts.gather_noise * e.parts.gather_noise +
                             e.parts.photon_noise * e.parts.photon_noise +

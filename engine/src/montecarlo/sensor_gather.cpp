@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/cosine_direction.h"
+#include "montecarlo/sample_variance.h"
 #include "parallel/fork_join.h"
 #include "solution/surface_summary.h"
 
@@ -20,16 +21,6 @@ constexpr int kBatches = PhotonField::kBatches;
 constexpr double kNearHit = 1.0;
 
 Rgb times(const Rgb& a, const Rgb& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
-
-double sample_variance_of_mean(const double* values, int n) {
-    if (n < 2) return 0;
-    double mean = 0;
-    for (int k = 0; k < n; ++k) mean += values[k];
-    mean /= n;
-    double sum = 0;
-    for (int k = 0; k < n; ++k) sum += (values[k] - mean) * (values[k] - mean);
-    return sum / (static_cast<double>(n) * (n - 1));
-}
 
 }  // namespace
 
@@ -261,6 +252,7 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
             difference[qi] = batch[qi] - batch_coarse[qi];
         }
         g.photon_variance = sample_variance_of_mean(batch.data(), kBatches);
+        g.photon_batches = batch;
         const double d = (fine_sum - coarse) / rays;
         g.coarse_difference_squared = d * d;
         g.coarse_difference_variance = sample_variance_of_mean(difference.data(), kBatches);

@@ -16,6 +16,7 @@
 //                  (combine_errors takes the difference over a sensor set).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -33,6 +34,9 @@ struct GatheredPoint {
     double illuminance = 0;
     double gather_variance = 0;
     double photon_variance = 0;
+    /// What each batch of the photon field alone gives the point's reflected light (lux): all
+    /// points read the same field, so a set's error holds a shared part these measure.
+    std::array<double, PhotonField::kBatches> photon_batches{};
     double coarse_difference_squared = 0;
     double coarse_difference_variance = 0;
 };
