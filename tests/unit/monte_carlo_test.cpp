@@ -9,6 +9,7 @@
 
 #include "montecarlo/element_mesh.h"
 #include "montecarlo/light_sources.h"
+#include "montecarlo/monte_carlo_error.h"
 #include "montecarlo/photon_field.h"
 #include "montecarlo/sensor_gather.h"
 #include "scene/prepared_scene.h"
@@ -192,6 +193,36 @@ TEST(SensorGather, APointBesideASurfaceReadsTheLightOfThatSpot) {
                                     fine.gather_variance + fine.photon_variance);
     EXPECT_LT(spread, 0.01 * fine.illuminance);
     EXPECT_NEAR(coarse.illuminance, fine.illuminance, 4 * spread + 0.01 * fine.illuminance);
+}
+
+// Two sets of 50 points with the same photon variance per point: in one each point's batches
+// scatter on their own, in the other all points move together batch by batch. The shared
+// scatter does not average over the set's points, so it gets the larger margin (2 against 1.5).
+TEST(MonteCarloError, PhotonNoiseTheSetSharesGetsTheLargerMargin) {
+    constexpr int kPoints = 50;
+    std::vector<GatheredPoint> own(kPoints), shared(kPoints);
+    for (int i = 0; i < kPoints; ++i) {
+        for (int q = 0; q < PhotonField::kBatches; ++q) {
+            const double sign = q % 2 ? 1.0 : -1.0;  // ±1 lx about 100 lx
+            own[static_cast<std::size_t>(i)].photon_batches[static_cast<std::size_t>(q)] =
+                100 + (((q + i) % 2) ? 1.0 : -1.0);
+            shared[static_cast<std::size_t>(i)].photon_batches[static_cast<std::size_t>(q)] =
+                100 + sign;
+        }
+    }
+    // The variance of a mean of 16 values of ±1: 16 / (16 · 15).
+    for (auto* set : {&own, &shared}) {
+        for (GatheredPoint& p : *set) {
+            p.illuminance = 100;
+            p.photon_variance = 1.0 / 15;
+        }
+    }
+    const std::vector<std::size_t> sizes{kPoints};
+    const double sigma = std::sqrt(1.0 / 15) / 100;
+    const double apart = combine_errors(own, sizes).parts.photon_noise;
+    const double together = combine_errors(shared, sizes).parts.photon_noise;
+    EXPECT_NEAR(apart, 1.5 * sigma, 1e-12);
+    EXPECT_NEAR(together, 2 * sigma, 1e-12);
 }
 
 }  // namespace

@@ -11,8 +11,8 @@ namespace {
 
 // The noise parts are measured standard deviations; these margins make the estimate a bound
 // on the realised error rather than its expectation (the spread of a few ray sets or sixteen
-// batches is itself uncertain, and photon noise is shared by neighbouring points, so a set's
-// RMS averages it less than independent noise).
+// batches is itself uncertain, and neighbouring points read the same elements, so a set's RMS
+// averages their photon noise less than independent noise).
 constexpr double kGatherMargin = 1.5;
 constexpr double kPhotonMargin = 1.5;
 // The photon noise every point of a set shares (the field read the same everywhere) is one
