@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "geometry/cosine_direction.h"
+#include "montecarlo/channel_product.h"
 #include "parallel/fork_join.h"
 #include "solution/surface_summary.h"
 
@@ -105,8 +106,8 @@ std::uint64_t PhotonField::trace(std::size_t photons, const LightSources& source
                 for (int c = 0; c < 3; ++c) indirect_[s][c] += d.flux[c];
                 const MeshElement& e = mesh_[static_cast<std::size_t>(mesh_.sides()[s].element)];
                 const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
-                batch_[s * kBatches + b] += static_cast<float>(photometric(
-                    Rgb{rho[0] * d.flux[0], rho[1] * d.flux[1], rho[2] * d.flux[2]}, channels));
+                batch_[s * kBatches + b] +=
+                    static_cast<float>(photometric(times(rho, d.flux), channels));
             }
             rays += wave_rays[k];
         }

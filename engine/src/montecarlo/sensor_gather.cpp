@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/cosine_direction.h"
+#include "montecarlo/channel_product.h"
 #include "montecarlo/sample_variance.h"
 #include "parallel/fork_join.h"
 #include "solution/surface_summary.h"
@@ -19,8 +20,6 @@ constexpr int kBatches = PhotonField::kBatches;
 // A hit nearer than this many times its element's size sees light that varies across the
 // element (a desk's edge beside a stack of books): it is gathered one bounce further.
 constexpr double kNearHit = 1.0;
-
-Rgb times(const Rgb& a, const Rgb& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
 }  // namespace
 

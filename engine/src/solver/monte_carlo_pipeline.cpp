@@ -8,6 +8,7 @@
 
 #include "design/glare.h"
 #include "design/lighting_assembly.h"
+#include "montecarlo/channel_product.h"
 #include "montecarlo/element_mesh.h"
 #include "montecarlo/light_sources.h"
 #include "montecarlo/monte_carlo_error.h"
@@ -168,8 +169,6 @@ double mean_survival(const PreparedScene& scene) {
     }
     return area > 0 ? weighted / area : 0;
 }
-
-Rgb times(const Rgb& a, const Rgb& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
 // Every element side as the surface summaries need it: irradiance from all photons, radiosity
 // emitted (front) plus reflected; maintained, each component times its factor.
