@@ -166,8 +166,8 @@ double IntensityTable::row(std::size_t g, double c_deg) const {
     return monotone_cubic(c, knot(k - 1), knot(k), knot(k + 1), knot(k + 2));
 }
 
-double IntensityTable::candela(double gamma_rad, double c_rad) const {
-    const double g = gamma_rad / kDegree, c = c_rad / kDegree;
+template <class RowAt>
+double IntensityTable::along_gamma(double g, const RowAt& row_at) const {
     const std::size_t m = gamma_.size();
     if (!(g >= gamma_.front() - kAngleTolerance && g <= gamma_.back() + kAngleTolerance)) return 0;
     const auto after = std::upper_bound(gamma_.begin(), gamma_.end(), g);
@@ -177,11 +177,11 @@ double IntensityTable::candela(double gamma_rad, double c_rad) const {
     const auto knot = [&](long j) -> std::optional<Knot> {
         if (j >= 0 && j < static_cast<long>(m)) {
             const auto u = static_cast<std::size_t>(j);
-            return Knot{gamma_[u], row(u, c)};
+            return Knot{gamma_[u], row_at(u, false)};
         }
-        if (j < 0 && gamma_.front() == 0) return Knot{-gamma_[1], row(1, c + 180)};
+        if (j < 0 && gamma_.front() == 0) return Knot{-gamma_[1], row_at(1, true)};
         if (j >= static_cast<long>(m) && gamma_.back() == 180) {
-            return Knot{360 - gamma_[m - 2], row(m - 2, c + 180)};
+            return Knot{360 - gamma_[m - 2], row_at(m - 2, true)};
         }
         return std::nullopt;
     };
@@ -191,15 +191,31 @@ double IntensityTable::candela(double gamma_rad, double c_rad) const {
     return std::max(0.0, value);
 }
 
+double IntensityTable::candela(double gamma_rad, double c_rad) const {
+    const double c = c_rad / kDegree;
+    return along_gamma(gamma_rad / kDegree, [&](std::size_t u, bool opposite) {
+        return row(u, opposite ? c + 180 : c);
+    });
+}
+
 double IntensityTable::peak_candela() const { return *std::max_element(cd_.begin(), cd_.end()); }
 
 double IntensityTable::integrate() const {
     constexpr double kGammaStep = 2.5 * kDegree, kCStep = 5 * kDegree;
+    const std::size_t m = gamma_.size();
+    // Along one C direction every γ node reads the same rows: interpolate each across C once.
+    std::vector<double> rows(m);
     const auto over_gamma = [&](double c_rad) {
+        const double c = c_rad / kDegree;
+        for (std::size_t u = 0; u < m; ++u) rows[u] = row(u, c);
+        const double before_pole = row(1, c + 180), after_pole = row(m - 2, c + 180);
+        const auto row_at = [&](std::size_t u, bool opposite) {
+            return opposite ? (u == 1 ? before_pole : after_pole) : rows[u];
+        };
         double sum = 0;
-        for (std::size_t i = 0; i + 1 < gamma_.size(); ++i) {
+        for (std::size_t i = 0; i + 1 < m; ++i) {
             sum += gauss(gamma_[i] * kDegree, gamma_[i + 1] * kDegree, kGammaStep,
-                         [&](double g) { return candela(g, c_rad) * std::sin(g); });
+                         [&](double g) { return along_gamma(g / kDegree, row_at) * std::sin(g); });
         }
         return sum;
     };

@@ -33,6 +33,10 @@ public:
 
 private:
     double row(std::size_t g, double c_deg) const;
+    /// The curve across γ (degrees) through the rows `row_at(u, opposite)` of one C direction
+    /// (`opposite`: the plane C + 180°, read beyond a pole).
+    template <class RowAt>
+    double along_gamma(double g, const RowAt& row_at) const;
     double integrate() const;
 
     std::vector<double> gamma_;  ///< degrees
