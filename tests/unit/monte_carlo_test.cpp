@@ -110,6 +110,22 @@ TEST(MonteCarlo, AgreesWithTheDenseSolverWithinBothEstimates) {
     EXPECT_GT(mc.stats.error_parts.photon_noise, 0);
 }
 
+// Tolerance means error: at a loose tolerance the first round is cut to it, so that the answer
+// is not ten times more accurate than asked (its estimate is about twice its error).
+TEST(MonteCarlo, ALooseToleranceIsNotMetTenTimesOver) {
+    const Scene scene = panel_room_with_sensors();
+    const double tolerance = 0.1;
+    const Result loose = testing::solve_with(scene, "monte-carlo", tolerance);
+    const Result reference = testing::solve_with(scene, "monte-carlo", 0.002);
+    ASSERT_EQ(loose.status, SolveStatus::converged) << describe(loose);
+    ASSERT_EQ(reference.status, SolveStatus::converged) << describe(reference);
+    const double error =
+        rms_relative_error(loose.sensors.at(0).illuminance, reference.sensors.at(0).illuminance);
+    EXPECT_GE(error, tolerance / 10) << describe(loose);
+    EXPECT_LE(error + reference.stats.error_estimate, loose.stats.error_estimate)
+        << describe(loose);
+}
+
 TEST(MonteCarlo, AMirrorImageAgreesWithinBothEstimates) {
     const Scene scene = panel_room_with_sensors();
     Scene mirrored = scene;  // x → 4 − x; polygons reversed to keep their fronts

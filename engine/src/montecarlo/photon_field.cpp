@@ -10,9 +10,11 @@
 namespace radiant {
 namespace {
 
-// Chunks traced between two looks at `stop`, a whole number of batch rounds; their deposits are
-// held until the wave is summed (a few MB), enough chunks to keep every core busy.
-constexpr std::size_t kWaveChunks = 4 * PhotonField::kBatches;
+// Chunks traced between two looks at `stop` (64 Ki photons), a whole number of batch rounds;
+// their deposits are held until the wave is summed (a few MB), enough chunks to keep every core
+// busy.
+constexpr std::size_t kWaveChunks = 65536 / PhotonField::kChunkPhotons;
+static_assert(kWaveChunks % PhotonField::kBatches == 0);
 // A photon in a furnace of reflectance 0.999 bounces a thousand times on average; this only
 // stops one that a rounding error keeps inside a closed solid.
 constexpr int kMaxBounces = 100000;

@@ -20,7 +20,7 @@ namespace radiant {
 class PhotonField {
 public:
     static constexpr int kBatches = 16;
-    static constexpr std::size_t kChunkPhotons = 1024;
+    static constexpr std::size_t kChunkPhotons = 128;
 
     PhotonField(const PreparedScene& scene, const ElementMesh& mesh, std::uint64_t seed);
 

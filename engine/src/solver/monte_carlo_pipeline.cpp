@@ -26,13 +26,16 @@ namespace {
 // over about a free path, and the gather reads it at the coarser level too, to measure the
 // discretisation.
 constexpr double kEdgeOfFreePath = 0.25;
-// The first round: a few photons per element side at tolerance 0.01, fewer at looser ones (noise
-// falls as 1/√photons), at least one chunk per batch; and ray sets enough for their spread to
-// mean something.
+// The first round: a few photons per element side and 8 ray sets per point at tolerance 0.01,
+// fewer at looser ones (noise falls as 1/√samples, and a loose tolerance must not be met ten
+// times over), but at least one chunk of photons per batch, and ray sets enough for their spread
+// to mean something: a set's points together give as many degrees of freedom as 8 sets give one
+// point. Eyes are sets of one and keep 8.
 constexpr std::size_t kMinInitialPhotons = PhotonField::kBatches * PhotonField::kChunkPhotons;
 constexpr double kInitialPhotonsPerSide = 2;
 constexpr double kInitialTolerance = 0.01;
 constexpr int kInitialSets = 8;
+constexpr int kMinGatherDegrees = kInitialSets - 1;
 // Rounds aim this far under the tolerance, so that the next estimate, itself noisy, meets it.
 constexpr double kTargetShare = 0.8;
 // A discretisation estimate above the target cuts every element's edges by this, at most
@@ -64,7 +67,7 @@ struct ComponentLight {
     SensorGather gather, eyes;
     int component;  ///< −1: every source
     double maintenance_factor;
-    SampleBudget budget{0, kInitialSets};
+    SampleBudget budget;
     int eye_sets = kInitialSets;
     MonteCarloError error, eye_error;  ///< the eyes': scaled to the tolerance
     std::vector<SetError> set_errors, eye_errors;
@@ -82,6 +85,19 @@ struct ComponentLight {
         eye_sets = std::max(eyes.sets(), static_cast<int>(share * eye_sets));
     }
 };
+
+// The first round's ray sets per sensor point: kInitialSets scaled by `share`, but enough for
+// the smallest sensor set's spread to have kMinGatherDegrees degrees of freedom.
+int first_round_sets(double share, const std::vector<std::size_t>& set_sizes) {
+    std::size_t smallest = std::numeric_limits<std::size_t>::max();
+    for (const std::size_t size : set_sizes) {
+        if (size > 0) smallest = std::min(smallest, size);
+    }
+    const auto degrees = static_cast<std::size_t>(kMinGatherDegrees);
+    const auto spread_sets = static_cast<int>(1 + (degrees + smallest - 1) / smallest);
+    const auto scaled = static_cast<int>(std::ceil(kInitialSets * share));
+    return std::min(kInitialSets, std::max(spread_sets, scaled));
+}
 
 // One level of elements with everything that refers to them.
 struct MonteCarloLevel {
@@ -407,6 +423,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         meshing.memory_bytes = level->mesh.size() * sizeof(MeshElement) +
                                level->mesh.sides().size() * sizeof(ElementSide);
         const double share = std::min(1.0, std::pow(kInitialTolerance / options_.tolerance, 2));
+        const int initial_sets = first_round_sets(share, set_sizes);
         for (std::size_t c = 0; c < level->lights.size(); ++c) {
             ComponentLight& light = *level->lights[c];
             if (c < carried.size()) std::tie(light.budget, light.eye_sets) = carried[c];
@@ -414,6 +431,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 {light.budget.photons, kMinInitialPhotons,
                  static_cast<std::size_t>(kInitialPhotonsPerSide * share *
                                           static_cast<double>(level->mesh.sides().size()))});
+            light.budget.sets = std::max(light.budget.sets, initial_sets);
         }
         bool refine = false;
         for (;; ++rounds) {
