@@ -69,9 +69,9 @@ TEST_P(Refinement, MeetsTheToleranceAndNearsTheReference) {
 // whose far wall inherits the bright end's light through coarse links, still does. The dense
 // path's estimate (issue 27) no longer asks for it where its mesh follows the tolerance (the
 // ρ 0.2 cube at 0.01: 600 patches, estimate 0.0017 for an RMS error of 0.0012); it does where
-// the tolerance gives a mesh too coarse to check — the scene's coarsest at 0.3, or a tolerance
-// above 1/3, which claimed its floor (0.02 at 0.4 for the mixed cube's 24 patches, whose RMS
-// error is 2.0 %).
+// the tolerance gives a mesh too coarse to check — the scene's coarsest, as at 0.3 for the ρ 0.2
+// cube and at 0.4 for the mixed cube's 24 patches (RMS error 2.0 %), which claim twice the
+// tolerance.
 INSTANTIATE_TEST_SUITE_P(BoxRooms, Refinement,
                          ::testing::Values(Case{"box-corridor-panel", "hierarchical", 0.01},
                                            Case{"box-cube-rho0.2", "direct", 0.3},

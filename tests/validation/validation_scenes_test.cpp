@@ -45,24 +45,27 @@ void expect_matches(const std::string& name, const std::string& method) {
 
 TEST_P(ValidationScene, MatchesExpected) { expect_matches(GetParam(), "auto"); }
 
-// At a coarse tolerance too, where the solvers' errors are far below it (parallel squares:
+// At coarse tolerances too, where the solvers' errors are far below them (parallel squares:
 // 4e-6 at 0.1) and the two solutions of the mesh check agree closer still.
 TEST_P(ValidationScene, EstimateBoundsTheErrorAtACoarseTolerance) {
     const std::string name = GetParam();
     const Scene scene = testing::load_scene(data_path("scenes/" + name + ".json"));
-    SolveOptions options = options_from(scene.settings);
-    options.tolerance = 0.1;
-    const Result result = solve(scene, options);
-    ASSERT_EQ(result.status, SolveStatus::converged) << result.error;
-    const double error = testing::rms_relative_error(result, expected()[name]);
-    EXPECT_GE(result.stats.error_estimate, error) << name;
-    // A tight bound where the error is large enough to read (issue 27: at most 4× where it is
-    // above 0.1 %). The cube's dense estimate was 17× its error at 0.1 when it counted the
-    // largest difference over surfaces three times over.
-    if (error > kReadableError) {
-        EXPECT_LE(result.stats.error_estimate, kTightFactor * error)
-            << name << ": " << result.stats.patches << " patches, discretisation part "
-            << result.stats.error_parts.discretisation;
+    for (const double tolerance : {0.3, 0.1}) {
+        SolveOptions options = options_from(scene.settings);
+        options.tolerance = tolerance;
+        const Result result = solve(scene, options);
+        ASSERT_EQ(result.status, SolveStatus::converged) << result.error;
+        const double error = testing::rms_relative_error(result, expected()[name]);
+        EXPECT_GE(result.stats.error_estimate, error) << name << " at " << tolerance;
+        // A tight bound where the error is large enough to read (issue 27: at most 4× where it
+        // is above 0.1 %). The cube's dense estimate was 17× its error at 0.1 when it counted
+        // the largest difference over surfaces three times over; the sphere's hierarchical one
+        // 4.5× at 0.3 when its check was at 0.5, too near to measure by.
+        if (error > kReadableError) {
+            EXPECT_LE(result.stats.error_estimate, kTightFactor * error)
+                << name << " at " << tolerance << ": " << result.stats.patches
+                << " patches, discretisation part " << result.stats.error_parts.discretisation;
+        }
     }
 }
 
