@@ -93,8 +93,8 @@ int first_round_sets(double share, const std::vector<std::size_t>& set_sizes) {
     for (const std::size_t size : set_sizes) {
         if (size > 0) smallest = std::min(smallest, size);
     }
-    const auto degrees = static_cast<std::size_t>(kMinGatherDegrees);
-    const auto spread_sets = static_cast<int>(1 + (degrees + smallest - 1) / smallest);
+    const auto spread_sets =
+        1 + static_cast<int>(std::ceil(kMinGatherDegrees / static_cast<double>(smallest)));
     const auto scaled = static_cast<int>(std::ceil(kInitialSets * share));
     return std::min(kInitialSets, std::max(spread_sets, scaled));
 }
