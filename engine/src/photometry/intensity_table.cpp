@@ -208,6 +208,7 @@ double IntensityTable::integrate() const {
     const auto over_gamma = [&](double c_rad) {
         const double c = c_rad / kDegree;
         for (std::size_t u = 0; u < m; ++u) rows[u] = row(u, c);
+        // Beyond the poles the curve reads the opposite plane at rows 1 and m − 2 only.
         const double before_pole = row(1, c + 180), after_pole = row(m - 2, c + 180);
         const auto row_at = [&](std::size_t u, bool opposite) {
             return opposite ? (u == 1 ? before_pole : after_pole) : rows[u];

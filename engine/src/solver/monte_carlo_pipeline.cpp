@@ -411,6 +411,9 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     }
     MemoryHold level_hold(*memory_, bytes_of(count));
     MemoryHold sets_hold(*memory_, 0);
+    // Each level's first round: the same share of the samples asked at tolerance 0.01.
+    const double share = std::min(1.0, std::pow(kInitialTolerance / options_.tolerance, 2));
+    const int initial_sets = first_round_sets(share, set_sizes);
     for (int refinements = 0;; ++refinements, edge *= kRefinementRatio) {
         // Stage: meshing — elements, and a ray tracer over them so that a hit names its element.
         Clock::time_point stage_start = Clock::now();
@@ -422,8 +425,6 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         meshing.seconds += seconds_since(stage_start);
         meshing.memory_bytes = level->mesh.size() * sizeof(MeshElement) +
                                level->mesh.sides().size() * sizeof(ElementSide);
-        const double share = std::min(1.0, std::pow(kInitialTolerance / options_.tolerance, 2));
-        const int initial_sets = first_round_sets(share, set_sizes);
         for (std::size_t c = 0; c < level->lights.size(); ++c) {
             ComponentLight& light = *level->lights[c];
             if (c < carried.size()) std::tie(light.budget, light.eye_sets) = carried[c];
