@@ -87,9 +87,8 @@ double gauss(double a, double b, double step, const F& f) {
     return sum;
 }
 
-}  // namespace
-
-std::string photometric_table_problem(const PhotometricTable& t) {
+/// What makes a table's angles or values unusable (empty when nothing does).
+std::string layout_problem(const PhotometricTable& t) {
     const auto ascending = [](const std::vector<double>& a) {
         return std::adjacent_find(a.begin(), a.end(), std::greater_equal<>()) == a.end();
     };
@@ -121,8 +120,22 @@ std::string photometric_table_problem(const PhotometricTable& t) {
                      [](double x) { return std::isfinite(x) && x >= 0; })) {
         return "intensities must be finite and >= 0";
     }
-    if (!(IntensityTable(t).flux_lm() > 0)) return "the photometric table emits no light";
     return {};
+}
+
+}  // namespace
+
+std::variant<IntensityTable, std::string> read_intensity_table(const PhotometricTable& t) {
+    if (std::string problem = layout_problem(t); !problem.empty()) return problem;
+    IntensityTable table(t);
+    if (!(table.flux_lm() > 0)) return std::string("the photometric table emits no light");
+    return table;
+}
+
+std::string photometric_table_problem(const PhotometricTable& t) {
+    const auto table = read_intensity_table(t);
+    const auto* problem = std::get_if<std::string>(&table);
+    return problem ? *problem : std::string();
 }
 
 IntensityTable::IntensityTable(const PhotometricTable& t) : gamma_(t.gamma_deg) {

@@ -3,16 +3,14 @@
 #pragma once
 
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "radiant/photometry.h"
 
 namespace radiant {
 
-/// Why a table cannot be used (empty string when it can): angle ranges, order, values.
-std::string photometric_table_problem(const PhotometricTable& table);
-
-/// Interpolates a valid table (photometric_table_problem() empty) with monotone piecewise cubic
+/// Interpolates a valid table (read_intensity_table() gives one) with monotone piecewise cubic
 /// Hermite curves (Fritsch & Carlson 1980), first across C then across γ. Monotone pieces never
 /// overshoot, so the intensity stays between neighbouring table values (never negative). The
 /// table's symmetry is unfolded to a full turn of C-planes; across the poles γ = 0 and 180° the
@@ -44,5 +42,11 @@ private:
     std::vector<double> cd_;     ///< [c * gamma_.size() + g]
     double flux_lm_ = 0;
 };
+
+/// The table made continuous, or why it cannot be used: angle ranges, order, values, no flux.
+std::variant<IntensityTable, std::string> read_intensity_table(const PhotometricTable& table);
+
+/// Why a table cannot be used (empty string when it can), as read_intensity_table() says.
+std::string photometric_table_problem(const PhotometricTable& table);
 
 }  // namespace radiant
