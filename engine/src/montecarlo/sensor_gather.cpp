@@ -20,6 +20,12 @@ constexpr int kBatches = PhotonField::kBatches;
 // A hit nearer than this many times its element's size sees light that varies across the
 // element (a desk's edge beside a stack of books): it is gathered one bounce further.
 constexpr double kNearHit = 1.0;
+// One ray in this many checks a far hit's element average against one bounce further (see
+// GatheredPoint::depth_difference_squared): the check costs a ray and the direct light there,
+// so checking every ray made the furnished offices' gathers about twice as dear. The checked rays
+// lie on diagonals of the strata, so that every row and column of them has its share.
+constexpr int kDepthCheckEvery = 4;
+bool checks_depth(int ray) { return (ray / kStrata + ray % kStrata) % kDepthCheckEvery == 0; }
 
 }  // namespace
 
@@ -34,14 +40,22 @@ SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
       stream_(which == Points::sensors ? kSensorStream : kEyeStream) {
     if (which == Points::eyes) {
         for (const PreparedObserver& o : scene.observers) {
-            points_.push_back(
-                {o.position, SensorReceiver(SensorKind::planar, o.view), true, {}, 0, {}, {}, {}});
+            points_.push_back({o.position,
+                               SensorReceiver(SensorKind::planar, o.view),
+                               true,
+                               {},
+                               0,
+                               {},
+                               {},
+                               {},
+                               {}});
         }
         return;
     }
     for (const PreparedSensorSet& set : scene.sensors) {
         for (const Vec3& p : set.points)
-            points_.push_back({p, SensorReceiver(set.kind, set.normal), false, {}, 0, {}, {}, {}});
+            points_.push_back(
+                {p, SensorReceiver(set.kind, set.normal), false, {}, 0, {}, {}, {}, {}});
     }
 }
 
@@ -55,6 +69,7 @@ std::size_t SensorGather::bytes_per_set() const {
     }
     const double share = hits > 0 ? static_cast<double>(near) / static_cast<double>(hits) : 1.0;
     return sizeof(double) + kRaysPerSet * sizeof(int) +
+           kRaysPerSet / kDepthCheckEvery * sizeof(FarBounce) +
            static_cast<std::size_t>(std::ceil(share * kRaysPerSet * sizeof(NearHit)));
 }
 
@@ -62,11 +77,28 @@ std::size_t SensorGather::memory_bytes() const {
     std::size_t bytes = points_.capacity() * sizeof(Point);
     for (const Point& p : points_) {
         bytes += p.set_direct.capacity() * sizeof(double) + p.hits.capacity() * sizeof(int) +
-                 p.near.capacity() * sizeof(NearHit) +
+                 p.far.capacity() * sizeof(FarBounce) + p.near.capacity() * sizeof(NearHit) +
                  p.sources.pieces.capacity() * sizeof(std::size_t) +
                  p.sources.clusters.capacity() * sizeof(int);
     }
     return bytes;
+}
+
+SensorGather::Bounce SensorGather::bounce(const Vec3& x, const Vec3& n, SampleStream& rng,
+                                          std::uint64_t& rays) const {
+    const double eps = visibility_.epsilon();
+    const Vec3 from = x + n * eps;
+    const Vec3 d = cosine_direction(n, rng.next(), rng.next());
+    ++rays;
+    const RayHit hit = visibility_.intersect(from, d, 4 * scene_.diagonal_m + 1);
+    Bounce out;
+    out.side = hit.triangle < 0 ? -1 : mesh_.side_hit(hit.triangle, d);
+    if (out.side < 0) return out;
+    const MeshElement& e = mesh_[static_cast<std::size_t>(hit.triangle)];
+    out.reflectance = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
+    out.direct =
+        sources_.direct_at(from + d * hit.t, mesh_.side_normal(out.side), visibility_, rng, rays);
+    return out;
 }
 
 void SensorGather::gather_point(std::size_t index, Point& point, int sets,
@@ -85,6 +117,7 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
     // Exactly what `sets` need: the memory budget counts them so (bytes_per_set).
     point.set_direct.reserve(static_cast<std::size_t>(sets));
     point.hits.reserve(static_cast<std::size_t>(sets) * kRaysPerSet);
+    point.far.reserve(static_cast<std::size_t>(sets) * kRaysPerSet / kDepthCheckEvery);
     for (int set = static_cast<int>(point.set_direct.size()); set < sets; ++set) {
         SampleStream rng(seed_, stream_, index, static_cast<std::uint64_t>(set));
         // A kind that averages receiver normals draws the emitting surfaces' one per set, and
@@ -116,27 +149,26 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
             const Vec3 x = origin + d * hit.t;
             const Rgb h = sources_.direct_at(x, n, visibility_, rng, rays);
             reflected += photometric(times(rho, h), channels);
-            if (hit.t >= kNearHit * std::sqrt(e.area_m2)) {
+            // One bounce further, where the element's average is not the light of this spot:
+            // always for a near hit; for a far one only to measure what the average misses.
+            const bool far = hit.t >= kNearHit * std::sqrt(e.area_m2);
+            if (far && !checks_depth(k)) {
                 point.hits.push_back(side);
                 continue;
             }
-            // Too near for the element's average light: one more bounce finds what lights
-            // this spot.
-            const Vec3 x1 = x + n * eps;
-            const Vec3 d2 = cosine_direction(n, rng.next(), rng.next());
-            ++rays;
-            const RayHit hit2 = visibility_.intersect(x1, d2, t_max);
-            const int side2 = hit2.triangle < 0 ? -1 : mesh_.side_hit(hit2.triangle, d2);
-            if (side2 >= 0) {
-                const MeshElement& e2 = mesh_[static_cast<std::size_t>(hit2.triangle)];
-                const Rgb& rho2 =
-                    scene_.materials[static_cast<std::size_t>(e2.material)].reflectance;
-                const Rgb h2 = sources_.direct_at(x1 + d2 * hit2.t, mesh_.side_normal(side2),
-                                                  visibility_, rng, rays);
-                reflected += photometric(times(rho, times(rho2, h2)), channels);
+            const Bounce further = bounce(x, n, rng, rays);
+            const double further_direct =
+                further.side < 0
+                    ? 0.0
+                    : photometric(times(rho, times(further.reflectance, further.direct)), channels);
+            if (far) {
+                point.hits.push_back(side);
+                point.far.push_back({further.side, static_cast<float>(further_direct)});
+                continue;
             }
+            reflected += further_direct;
             point.hits.push_back(-2 - static_cast<int>(point.near.size()));
-            point.near.push_back({side, side2});
+            point.near.push_back({side, further.side});
         }
         point.set_direct.push_back(direct + reflected / kRaysPerSet);
     }
@@ -193,6 +225,30 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
         std::vector<double> set_value(static_cast<std::size_t>(sets));
         std::array<double, kBatches> batch{}, batch_coarse{};
         double coarse = 0, fine_sum = 0, fine = 0;
+        // Far hits' element average less one bounce further: their sum, their squares' sum
+        // and the sum's share of each batch (see GatheredPoint::depth_difference_squared).
+        double depth_sum = 0, depth_squares = 0;
+        std::array<double, kBatches> depth_batch{};
+        std::size_t far = 0;
+        auto check_depth = [&](int side) {
+            const FarBounce& b = p.far[far++];
+            double difference = reflected_lux[static_cast<std::size_t>(side)] - b.direct;
+            double scale = 0;  // the second side's batch tallies, through the first reflectance
+            if (b.second >= 0) {
+                const auto second = static_cast<std::size_t>(b.second);
+                const double through =
+                    photometric(times(reflectance(side), reflected[second]), channels);
+                difference -= through;
+                scale = reflected_lux[second] > 0 ? through / reflected_lux[second] : 0;
+            }
+            depth_sum += difference;
+            depth_squares += difference * difference;
+            for (int q = 0; q < kBatches; ++q) {
+                depth_batch[static_cast<std::size_t>(q)] +=
+                    field.batch_reflected(side, q) - b.direct -
+                    (b.second >= 0 ? scale * field.batch_reflected(b.second, q) : 0.0);
+            }
+        };
         // The field's light reflected at `side` toward the point; a near hit's, through the
         // reflectance of the first surface (`first`, else none).
         auto land = [&](int side, int first) {
@@ -229,6 +285,7 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
                 const int code = p.hits[static_cast<std::size_t>(j * kRaysPerSet + k)];
                 if (code >= 0) {
                     land(code, -1);
+                    if (checks_depth(k)) check_depth(code);
                 } else if (code <= -2) {
                     const NearHit& near = p.near[static_cast<std::size_t>(-2 - code)];
                     if (near.second >= 0) land(near.second, near.first);
@@ -255,6 +312,13 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
         const double d = (fine_sum - coarse) / rays;
         g.coarse_difference_squared = d * d;
         g.coarse_difference_variance = sample_variance_of_mean(difference.data(), kBatches);
+        const double checked = rays / kDepthCheckEvery;
+        const double depth = depth_sum / checked;
+        g.depth_difference_squared = depth * depth;
+        for (double& v : depth_batch) v /= checked;
+        g.depth_difference_variance =
+            std::max(0.0, depth_squares / checked - depth * depth) / (checked - 1) +
+            sample_variance_of_mean(depth_batch.data(), kBatches);
     });
     return out;
 }

@@ -13,7 +13,9 @@
 //   photon noise   the spread of its value over the field's batches;
 //   discretisation the change when the field is read at the coarser level of the mesh (the
 //                  elements' bisection parents), less what the photon noise explains
-//                  (combine_errors takes the difference over a sensor set).
+//                  (combine_errors takes the difference over a sensor set); and, from one far
+//                  hit in four that also bounces once more, how far the element averages are
+//                  from the light of the spots the rays land on, less its noise.
 #pragma once
 
 #include <array>
@@ -39,6 +41,11 @@ struct GatheredPoint {
     std::array<double, PhotonField::kBatches> photon_batches{};
     double coarse_difference_squared = 0;
     double coarse_difference_variance = 0;
+    /// The same for reading each far hit's element average instead of gathering one bounce
+    /// further: the average misses how the light varies over a partly hidden element (the back
+    /// of a bookshelf's compartment, seen only above the books).
+    double depth_difference_squared = 0;
+    double depth_difference_variance = 0;
 };
 
 class SensorGather {
@@ -76,6 +83,12 @@ private:
         int first = 0;
         int second = -1;
     };
+    /// A far hit's check: the side one more bounce landed on (or −1), and the direct light that
+    /// spot sends back through both reflectances (lux), to compare with the element's average.
+    struct FarBounce {
+        int second = -1;
+        float direct = 0;
+    };
     struct Point {
         Vec3 position;
         SensorReceiver receiver;
@@ -86,7 +99,17 @@ private:
         /// per ray, set by set: the side it landed on, −1 for none, or −2 − i for near[i]
         std::vector<int> hits;
         std::vector<NearHit> near;
+        /// per far hit of a ray that checks its depth, in the order of `hits`: its one bounce
+        /// further
+        std::vector<FarBounce> far;
     };
+    /// Where a cosine-distributed ray from a hit lands, and what lights that spot directly.
+    struct Bounce {
+        int side = -1;
+        Rgb reflectance{0, 0, 0};
+        Rgb direct{0, 0, 0};
+    };
+    Bounce bounce(const Vec3& x, const Vec3& n, SampleStream& rng, std::uint64_t& rays) const;
     void gather_point(std::size_t index, Point& point, int sets, std::uint64_t& rays) const;
 
     const PreparedScene& scene_;
