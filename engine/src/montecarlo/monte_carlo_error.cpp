@@ -27,9 +27,10 @@ constexpr double kMinGrowth = 1.5;
 // The far hits' depth check (GatheredPoint::depth_difference_squared) counts only where the
 // set's squared differences exceed their noise by this many of that excess's own standard
 // deviations: a set of one point reads a single noisy difference, whose square exceeds its
-// variance one time in three (the example office's desk points made its mesh 3.6 times finer
-// at tolerance 0.01 for no better answer).
-constexpr double kDepthSignificance = 2;
+// variance one time in three, and a scene has many such sets and rounds (the example office's
+// desk points made its mesh 3.6 times finer at tolerance 0.01 for no better answer; at two
+// deviations, still 4 times at 0.003).
+constexpr double kDepthSignificance = 3;
 // Bias may take this much of the target² before the noise budget is held to what it leaves.
 constexpr double kMinNoiseShare = 0.1;
 

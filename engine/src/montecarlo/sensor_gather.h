@@ -14,8 +14,8 @@
 //   discretisation the change when the field is read at the coarser level of the mesh (the
 //                  elements' bisection parents), less what the photon noise explains
 //                  (combine_errors takes the difference over a sensor set); and, from one far
-//                  hit in four that also bounces once more, how far the element averages are
-//                  from the light of the spots the rays land on, less its noise.
+//                  hit in four whose path goes on (see FarBounce), how far the element averages
+//                  are from the light of the spots the rays land on, less its noise.
 #pragma once
 
 #include <array>
@@ -83,11 +83,14 @@ private:
         int first = 0;
         int second = -1;
     };
-    /// A far hit's check: the side one more bounce landed on (or −1), and the direct light that
-    /// spot sends back through both reflectances (lux), to compare with the element's average.
+    /// A far hit's check: where the path beyond it first lands far enough for an element's
+    /// average (`second`, −1 for nowhere), the reflectances along the way before that element's
+    /// own (`through`, the hit's included), and the direct light the path's spots send back
+    /// (lux), to compare with the hit's element average.
     struct FarBounce {
         int second = -1;
         float direct = 0;
+        std::array<float, 3> through{};
     };
     struct Point {
         Vec3 position;
@@ -108,8 +111,14 @@ private:
         int side = -1;
         Rgb reflectance{0, 0, 0};
         Rgb direct{0, 0, 0};
+        Vec3 position, normal;
+        bool near = false;  ///< nearer than its element's size: its average is not that spot's
     };
     Bounce bounce(const Vec3& x, const Vec3& n, SampleStream& rng, std::uint64_t& rays) const;
+    /// A far hit's check (see FarBounce), from the first bounce beyond it (`first`) on, through
+    /// the hit's reflectance `rho`.
+    FarBounce check_path(const Bounce& first, const Rgb& rho, SampleStream& rng,
+                         std::uint64_t& rays) const;
     void gather_point(std::size_t index, Point& point, int sets, std::uint64_t& rays) const;
 
     const PreparedScene& scene_;
