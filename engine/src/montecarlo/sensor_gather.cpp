@@ -20,10 +20,10 @@ constexpr int kBatches = PhotonField::kBatches;
 // A hit nearer than this many times its element's size sees light that varies across the
 // element (a desk's edge beside a stack of books): it is gathered one bounce further.
 constexpr double kNearHit = 1.0;
-// One ray in this many checks a far hit's element average against one bounce further (see
-// GatheredPoint::depth_difference_squared): the check costs a ray and the direct light there,
-// so checking every ray made the furnished offices' gathers about twice as dear. The checked rays
-// lie on diagonals of the strata, so that every row and column of them has its share.
+// One ray in this many checks a far hit's element average against the path beyond it (see
+// GatheredPoint::depth_difference_squared): the check costs rays and the direct light at their
+// ends, so checking every ray made the furnished offices' gathers about twice as dear. The checked
+// rays lie on diagonals of the strata, so that every row and column of them has its share.
 constexpr int kDepthCheckEvery = 4;
 bool checks_depth(int ray) { return (ray / kStrata + ray % kStrata) % kDepthCheckEvery == 0; }
 // A check's path goes on while it lands too near for an element's average, up to this many
@@ -180,7 +180,8 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
             const Rgb h = sources_.direct_at(x, n, visibility_, rng, rays);
             reflected += photometric(times(rho, h), channels);
             // One bounce further, where the element's average is not the light of this spot:
-            // always for a near hit; for a far one only to measure what the average misses.
+            // always for a near hit; for a far one only to measure what the average misses
+            // (check_path).
             const bool far = hit.t >= kNearHit * std::sqrt(e.area_m2);
             if (far && !checks_depth(k)) {
                 point.hits.push_back(side);
@@ -253,8 +254,8 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
         std::vector<double> set_value(static_cast<std::size_t>(sets));
         std::array<double, kBatches> batch{}, batch_coarse{};
         double coarse = 0, fine_sum = 0, fine = 0;
-        // Far hits' element average less one bounce further: their sum, their squares' sum
-        // and the sum's share of each batch (see GatheredPoint::depth_difference_squared).
+        // Checked far hits' element average less the path beyond them: their sum, their squares'
+        // sum and the sum's share of each batch (see GatheredPoint::depth_difference_squared).
         double depth_sum = 0, depth_squares = 0;
         std::array<double, kBatches> depth_batch{};
         std::size_t far = 0;

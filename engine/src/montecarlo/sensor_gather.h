@@ -41,9 +41,9 @@ struct GatheredPoint {
     std::array<double, PhotonField::kBatches> photon_batches{};
     double coarse_difference_squared = 0;
     double coarse_difference_variance = 0;
-    /// The same for reading each far hit's element average instead of gathering one bounce
-    /// further: the average misses how the light varies over a partly hidden element (the back
-    /// of a bookshelf's compartment, seen only above the books).
+    /// The same for reading each far hit's element average instead of following the path
+    /// beyond it: the average misses how the light varies over a partly hidden element (the
+    /// back of a bookshelf's compartment, seen only above the books).
     double depth_difference_squared = 0;
     double depth_difference_variance = 0;
 };
