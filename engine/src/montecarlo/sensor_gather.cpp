@@ -20,6 +20,8 @@ constexpr int kBatches = PhotonField::kBatches;
 // A hit nearer than this many times its element's size sees light that varies across the
 // element (a desk's edge beside a stack of books): it is gathered one bounce further.
 constexpr double kNearHit = 1.0;
+// Rays from a sensor or a hit end beyond anything in the scene.
+double ray_length(const PreparedScene& scene) { return 4 * scene.diagonal_m + 1; }
 // One ray in this many checks a far hit's element average against the path beyond it (see
 // GatheredPoint::depth_difference_squared): the check costs rays and the direct light at their
 // ends, so checking every ray made the furnished offices' gathers about twice as dear. The checked
@@ -44,22 +46,15 @@ SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
       stream_(which == Points::sensors ? kSensorStream : kEyeStream) {
     if (which == Points::eyes) {
         for (const PreparedObserver& o : scene.observers) {
-            points_.push_back({o.position,
-                               SensorReceiver(SensorKind::planar, o.view),
-                               true,
-                               {},
-                               0,
-                               {},
-                               {},
-                               {},
-                               {}});
+            points_.push_back({.position = o.position,
+                               .receiver = SensorReceiver(SensorKind::planar, o.view),
+                               .background = true});
         }
         return;
     }
     for (const PreparedSensorSet& set : scene.sensors) {
         for (const Vec3& p : set.points)
-            points_.push_back(
-                {p, SensorReceiver(set.kind, set.normal), false, {}, 0, {}, {}, {}, {}});
+            points_.push_back({.position = p, .receiver = SensorReceiver(set.kind, set.normal)});
     }
 }
 
@@ -94,7 +89,7 @@ SensorGather::Bounce SensorGather::bounce(const Vec3& x, const Vec3& n, SampleSt
     const Vec3 from = x + n * eps;
     const Vec3 d = cosine_direction(n, rng.next(), rng.next());
     ++rays;
-    const RayHit hit = visibility_.intersect(from, d, 4 * scene_.diagonal_m + 1);
+    const RayHit hit = visibility_.intersect(from, d, ray_length(scene_));
     Bounce out;
     out.side = hit.triangle < 0 ? -1 : mesh_.side_hit(hit.triangle, d);
     if (out.side < 0) return out;
@@ -135,7 +130,7 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
                                 std::uint64_t& rays) const {
     const int channels = scene_.channels;
     const double eps = visibility_.epsilon();
-    const double t_max = 4 * scene_.diagonal_m + 1;
+    const double t_max = ray_length(scene_);
     const SensorReceiver& receiver = point.receiver;
     const bool fixed = receiver.fixed();
     const Vec3 fixed_normal = receiver.normal_at(0);

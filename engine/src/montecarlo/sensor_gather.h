@@ -95,16 +95,15 @@ private:
     struct Point {
         Vec3 position;
         SensorReceiver receiver;
-        bool background = false;              ///< an observer's eye: no luminaire light
-        LightSources::SensorSources sources;  ///< the light tree's cut at the point
-        double luminaires = 0;                ///< photometric, exact
-        std::vector<double> set_direct;  ///< per set: emitting pieces + mean ρ ⊙ E_direct(hit)
+        bool background = false;                ///< an observer's eye: no luminaire light
+        LightSources::SensorSources sources{};  ///< the light tree's cut at the point
+        double luminaires = 0;                  ///< photometric, exact
+        std::vector<double> set_direct{};  ///< per set: emitting pieces + mean ρ ⊙ E_direct(hit)
         /// per ray, set by set: the side it landed on, −1 for none, or −2 − i for near[i]
-        std::vector<int> hits;
-        std::vector<NearHit> near;
-        /// per far hit of a ray that checks its depth, in the order of `hits`: its one bounce
-        /// further
-        std::vector<FarBounce> far;
+        std::vector<int> hits{};
+        std::vector<NearHit> near{};
+        /// per far hit of a ray that checks its depth, in the order of `hits`: the path beyond
+        std::vector<FarBounce> far{};
     };
     /// Where a cosine-distributed ray from a hit lands, and what lights that spot directly.
     struct Bounce {
