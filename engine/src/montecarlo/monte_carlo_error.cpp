@@ -84,13 +84,23 @@ std::vector<SetError> set_errors(const std::vector<GatheredPoint>& points,
     return out;
 }
 
-MonteCarloError combine_errors(const std::vector<GatheredPoint>& points,
-                               const std::vector<std::size_t>& set_sizes) {
+MonteCarloError worst_error(const std::vector<SetError>& sets, double scale) {
     MonteCarloError worst;
-    for (const SetError& set : set_errors(points, set_sizes)) {
-        if (set.mean > 0 && !(set.error.total <= worst.total)) worst = set.error;
+    for (const SetError& set : sets) {
+        if (!(set.mean > 0)) continue;
+        MonteCarloError e = set.error;
+        e.total *= scale;
+        e.parts.gather_noise *= scale;
+        e.parts.photon_noise *= scale;
+        e.parts.discretisation *= scale;
+        if (!(e.total <= worst.total)) worst = e;
     }
     return worst;
+}
+
+MonteCarloError combine_errors(const std::vector<GatheredPoint>& points,
+                               const std::vector<std::size_t>& set_sizes) {
+    return worst_error(set_errors(points, set_sizes));
 }
 
 SampleBudget next_budget(const MonteCarloError& error, const SampleBudget& now, double target,

@@ -24,6 +24,9 @@ struct SetError {
 std::vector<SetError> set_errors(const std::vector<GatheredPoint>& points,
                                  const std::vector<std::size_t>& set_sizes);
 
+/// The worst of the sets' errors (sets without light aside), each scaled by `scale`.
+MonteCarloError worst_error(const std::vector<SetError>& sets, double scale = 1);
+
 /// The estimate from every point's error parts: the worst set's.
 MonteCarloError combine_errors(const std::vector<GatheredPoint>& points,
                                const std::vector<std::size_t>& set_sizes);

@@ -214,22 +214,6 @@ std::vector<SolvedElement> solved_sides(const PreparedScene& scene, const Elemen
     return out;
 }
 
-// The worst of the sets' errors, each scaled by `scale`: the eyes' are budgeted at the
-// tolerance over their own target.
-MonteCarloError worst_error(const std::vector<SetError>& sets, double scale) {
-    MonteCarloError worst;
-    for (const SetError& set : sets) {
-        if (!(set.mean > 0)) continue;
-        MonteCarloError e = set.error;
-        e.total *= scale;
-        e.parts.gather_noise *= scale;
-        e.parts.photon_noise *= scale;
-        e.parts.discretisation *= scale;
-        if (!(e.total <= worst.total)) worst = e;
-    }
-    return worst;
-}
-
 // The maintained sensor values, Σ factor × component, of the sensor sets (not the observers).
 std::vector<double> maintained_values(const MonteCarloLevel& level, std::size_t sensor_points) {
     std::vector<double> out(sensor_points, 0.0);
@@ -482,9 +466,10 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 if (done(*light)) continue;
                 light->points = light->gather.evaluate(light->field);
                 light->set_errors = set_errors(light->points, set_sizes);
-                light->error = combine_errors(light->points, set_sizes);
+                light->error = worst_error(light->set_errors);
                 light->eye_points = light->eyes.evaluate(light->field);
                 light->eye_errors = set_errors(light->eye_points, eye_sizes);
+                // The eyes' are budgeted at the tolerance over their own target.
                 light->eye_error = worst_error(light->eye_errors, eye_scale);
                 // A later round never claims a larger error for its better answer.
                 light->reported = std::min(light->reported, light->error.total);
