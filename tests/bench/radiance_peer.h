@@ -63,7 +63,9 @@ void print_equal_error_speed(std::ostream& out, const std::vector<BenchRow>& row
 
 struct RadianceReferenceOptions {
     int runs = 4;  ///< independent runs (rtrace -u+, each started in its own second)
-    RadianceSetting setting = "-ab 1000 -lr 0 -lw 5e-6 -aa 0 -ad 16384 -ds 0.01 -dt 0 -dc 1 -dj 0";
+    /// -dj 1: without jitter, reflected rays' shadow rays aim at an area source's centre
+    /// (rtrace cuts sources into parts only for rays of high weight), see docs/radiance-peer.md.
+    RadianceSetting setting = "-ab 1000 -lr 0 -lw 5e-6 -aa 0 -ad 16384 -ds 0.01 -dt 0 -dc 1 -dj 1";
     int threads = 1;
     std::filesystem::path work_dir;
 };

@@ -140,6 +140,7 @@ TEST(RadianceExport, WritesMaterialsPolygonsLightsAndPoints) {
     // luminaires: 1 + 1 + 2 (pattern)
     EXPECT_EQ(s.materials, 12u);
     EXPECT_EQ(s.light_sources, 4u);
+    EXPECT_EQ(s.area_sources, 1u);  // the panel; its shadow rays need -dj 1
     const std::string rad = test::read_text(dir / "scene.rad");
 
     // One-sided: the front plastic and the mix to black on the back.
@@ -202,9 +203,9 @@ TEST(RadianceExport, WritesMaterialsPolygonsLightsAndPoints) {
 
     // The reflecting panel needs every shadow ray tested.
     EXPECT_TRUE(s.needs_all_shadow_tests);
-    EXPECT_NE(
-        test::read_text(dir / "README").find("rtrace -I -h -ab 8 -aa 0 -ad 2048 -lw 1e-4 -dt 0"),
-        std::string::npos);
+    EXPECT_NE(test::read_text(dir / "README")
+                  .find("rtrace -I -h -ab 8 -aa 0 -ad 2048 -lw 1e-4 -dt 0 -ds 0.02 -dj 1"),
+              std::string::npos);
 }
 
 TEST(RadianceExport, PhotometricDataFileHasGammaRowsAndCColumns) {

@@ -211,6 +211,7 @@ struct Writer {
             }
             if (scene.materials[static_cast<std::size_t>(p.material)].emits()) {
                 ++summary.light_sources;
+                ++summary.area_sources;
             }
         }
         rad << '\n';
@@ -390,6 +391,7 @@ struct Writer {
           << "  oconv scene.rad > scene.oct\n"
           << "  rtrace -I -h -ab 8 -aa 0 -ad 2048 -lw 1e-4"
           << (summary.needs_all_shadow_tests ? " -dt 0" : "")
+          << (summary.area_sources > 0 ? " -ds 0.02 -dj 1" : "")
           << " -n 2 scene.oct < points.txt > irradiance.txt\n"
           << "  rcalc -e '$1=179*(0.2126*$1+0.7152*$2+0.0722*$3)' irradiance.txt > lux.txt\n\n"
           << "lux.txt has one illuminance (lux) per point. The weights are Radiant's (Rec. 709),\n"
@@ -398,6 +400,13 @@ struct Writer {
             r << "\nThis scene has emitters that also reflect: keep -dt 0 (every shadow ray "
                  "tested),\n"
               << "or rtrace adds the untested ones at 1/(1 - c) times their light.\n";
+        }
+        if (summary.area_sources > 0) {
+            r << "\nThis scene has emitting surfaces: keep -dj 1. rtrace cuts a source into\n"
+              << "parts (-ds) only for rays of high weight; the shadow rays of reflected light\n"
+              << "aim at the source's centre unless jittered, so a wall near a large panel is\n"
+              << "lit as if the panel were a point there (light seen close to a surface can be\n"
+              << "2 % off). -ds 0.02 keeps the jitter's noise in the direct light small.\n";
         }
         return r.str();
     }

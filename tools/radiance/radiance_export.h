@@ -53,6 +53,10 @@ struct ExportSummary {
     std::size_t materials = 0;  ///< RADIANCE materials written (modifiers, patterns excluded)
     std::size_t polygons = 0;
     std::size_t light_sources = 0;  ///< emitting polygons plus point luminaires
+    /// Emitting polygons. rtrace cuts a source into parts (-ds) only for rays of high weight;
+    /// the shadow rays of reflected rays aim at the whole source's centre unless jittered
+    /// (-dj 1), which lights a wall near a large panel as if the panel were a point.
+    std::size_t area_sources = 0;
     /// Emitters that also reflect are a light behind a partly transparent reflecting layer.
     /// rtrace must then test every shadow ray (-dt 0): it adds the sources it does not test at
     /// their unoccluded value, which for these lights is 1/(1 − c) too bright.
