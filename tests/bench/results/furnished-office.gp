@@ -8,14 +8,14 @@ set xlabel 'seconds'
 set ylabel 'RMS relative error'
 set title 'radiant-bench: error against time'
 $d0 << EOD
-0.197584 0.011311
-0.640325 0.00400984
-11.3347 0.000964572
+0.133037 0.0203559
+0.2211 0.00476981
+2.16938 0.00141278
 EOD
 $d1 << EOD
-0.388567 0.00644505
-0.502107 0.00383338
-2.94775 0.000867765
+0.158176 0.0168518
+0.245828 0.00287546
+0.944668 0.00129722
 EOD
 plot $d0 with linespoints title 'furnished-office monte-carlo', \
      $d1 with linespoints title 'furnished-office-ies monte-carlo'
