@@ -269,8 +269,8 @@ TEST(MonteCarloError, PhotonNoiseTheSetSharesGetsTheLargerMargin) {
     }
     const std::vector<std::size_t> sizes{kPoints};
     const double sigma = std::sqrt(1.0 / 15) / 100;
-    const double apart = combine_errors(own, sizes).parts.photon_noise;
-    const double together = combine_errors(shared, sizes).parts.photon_noise;
+    const double apart = worst_error(set_errors(own, sizes)).parts.photon_noise;
+    const double together = worst_error(set_errors(shared, sizes)).parts.photon_noise;
     EXPECT_NEAR(apart, 1.5 * sigma, 1e-12);
     EXPECT_NEAR(together, 2 * sigma, 1e-12);
 }

@@ -98,11 +98,6 @@ MonteCarloError worst_error(const std::vector<SetError>& sets, double scale) {
     return worst;
 }
 
-MonteCarloError combine_errors(const std::vector<GatheredPoint>& points,
-                               const std::vector<std::size_t>& set_sizes) {
-    return worst_error(set_errors(points, set_sizes));
-}
-
 SampleBudget next_budget(const MonteCarloError& error, const SampleBudget& now, double target,
                          double seconds_per_photon, double seconds_per_set) {
     const double g = error.parts.gather_noise, f = error.parts.photon_noise;

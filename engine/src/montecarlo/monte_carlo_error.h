@@ -27,10 +27,6 @@ std::vector<SetError> set_errors(const std::vector<GatheredPoint>& points,
 /// The worst of the sets' errors (sets without light aside), each scaled by `scale`.
 MonteCarloError worst_error(const std::vector<SetError>& sets, double scale = 1);
 
-/// The estimate from every point's error parts: the worst set's.
-MonteCarloError combine_errors(const std::vector<GatheredPoint>& points,
-                               const std::vector<std::size_t>& set_sizes);
-
 struct SampleBudget {
     std::size_t photons = 0;
     int sets = 0;  ///< ray sets per sensor point

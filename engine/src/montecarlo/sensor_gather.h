@@ -13,7 +13,7 @@
 //   photon noise   the spread of its value over the field's batches;
 //   discretisation the change when the field is read at the coarser level of the mesh (the
 //                  elements' bisection parents), less what the photon noise explains
-//                  (combine_errors takes the difference over a sensor set); and, from one far
+//                  (set_errors takes the difference over a sensor set); and, from one far
 //                  hit in four whose path goes on (see FarBounce), how far the element averages
 //                  are from the light of the spots the rays land on, less its noise.
 #pragma once

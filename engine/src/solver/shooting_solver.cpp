@@ -63,8 +63,8 @@ SolverOutcome progressive_shooting(const LinearSystem& s, const std::array<Contr
     auto last_report = std::chrono::steady_clock::now();
     auto last_snapshot = last_report;
     // A guard, not a limit that a solvable system meets (the deadline is): the unshot light falls
-    // by about ρ per n shots, so a furnace of ρ 0.999 solved to 5e-5 of the tolerance takes some
-    // 2 500 shots per patch.
+    // by about ρ per n shots, so a furnace of ρ 0.999 solved to half a percent of the tolerance
+    // takes more than 1 000 shots per patch.
     const std::size_t max_shots = 10000 * std::max<std::size_t>(n, 1000);
     while (true) {
         if (out.iterations % check_every == 0) {
