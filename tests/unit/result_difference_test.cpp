@@ -1,5 +1,5 @@
-// largest_relative_difference and relative_rms_difference: the measures behind the
-// discretisation part of the error estimate.
+// relative_rms_difference: the measure behind the discretisation and completion parts of the
+// error estimate.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,42 +16,21 @@ Result two_surfaces(double bright, double dark) {
     return r;
 }
 
-TEST(ResultDifference, IdenticalResultsDoNotDiffer) {
-    const Result a = two_surfaces(100, 50);
-    EXPECT_EQ(largest_relative_difference(a, a), 0.0);
+TEST(RelativeRmsDifference, DarkSurfacesAreMeasuredAgainstATenthOfTheMean) {
+    // Mean irradiance (100 + 0.001) / 2, mean radiosity half that; the dark surface's change
+    // counts against a tenth of each, not against its own 0.001 lux.
+    const double d = 0.001 / (0.1 * 100.001 / 2);
+    EXPECT_NEAR(relative_rms_difference(two_surfaces(100, 0.001), two_surfaces(100, 0.002)),
+                std::sqrt(2 * d * d / 4), 1e-12);
 }
 
-TEST(ResultDifference, LargestRelativeSurfaceDifference) {
-    // 2 % on the bright surface, 4 % on the dark one (which is not darker than a tenth).
-    EXPECT_NEAR(largest_relative_difference(two_surfaces(100, 50), two_surfaces(102, 52)), 0.04,
-                1e-12);
-}
-
-TEST(ResultDifference, DarkValuesAreMeasuredAgainstATenthOfTheMean) {
-    // Mean irradiance (100 + 0.001) / 2; the dark surface's 0.001 lux change counts against a
-    // tenth of it, not against its own 0.001 lux.
-    const double d =
-        largest_relative_difference(two_surfaces(100, 0.001), two_surfaces(100, 0.002));
-    EXPECT_NEAR(d, 0.001 / (0.1 * 100.001 / 2), 1e-12);
-}
-
-TEST(ResultDifference, SurfacesUnderOnePercentOfTheAreaDoNotCount) {
+TEST(RelativeRmsDifference, SurfacesUnderOnePercentOfTheAreaDoNotCount) {
     Result a = two_surfaces(100, 100), b = a;
     a.surfaces.push_back({"chair leg", 0.01, 100, 50});
     b.surfaces.push_back({"chair leg", 0.01, 150, 75});
-    EXPECT_EQ(largest_relative_difference(a, b), 0.0);
+    EXPECT_EQ(relative_rms_difference(a, b), 0.0);
     a.surfaces.back().area_m2 = b.surfaces.back().area_m2 = 0.1;
-    EXPECT_NEAR(largest_relative_difference(a, b), 0.5, 1e-12);
-}
-
-TEST(ResultDifference, SensorsCountPointByPoint) {
-    Result a = two_surfaces(100, 100), b = a;
-    SensorResult desk;
-    desk.illuminance = {200, 400};
-    a.sensors.push_back(desk);
-    desk.illuminance = {200, 412};
-    b.sensors.push_back(desk);
-    EXPECT_NEAR(largest_relative_difference(a, b), 12.0 / 400, 1e-12);
+    EXPECT_NEAR(relative_rms_difference(a, b), std::sqrt(2 * 0.25 / 6), 1e-12);
 }
 
 TEST(RelativeRmsDifference, SensorsCountAsEachSetsRmsOverItsMean) {

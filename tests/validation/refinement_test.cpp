@@ -65,16 +65,16 @@ TEST_P(Refinement, MeetsTheToleranceAndNearsTheReference) {
 
 // The hierarchical solver's first solve of the panel room at 0.01 no longer needs refining since
 // links share their sources by the factor (see Link), nor the cubes' at 0.005 since leaves are
-// completed through their inherited links first (see leaf_completion.h); the corridor's at 0.01,
-// whose far wall inherits the bright end's light through coarse links, still does. The dense
+// completed through their inherited links first (see leaf_completion.h), nor the corridor's at
+// 0.01 since its estimate measures the RMS difference its error is stated in, not the largest
+// (RMS error 0.35 %, estimate 0.43 %; it used to refine to an error of 0.065 %). The dense
 // path's estimate (issue 27) no longer asks for it where its mesh follows the tolerance (the
 // ρ 0.2 cube at 0.01: 600 patches, estimate 0.0017 for an RMS error of 0.0012); it does where
 // the tolerance gives a mesh too coarse to check — the scene's coarsest, as at 0.3 for the ρ 0.2
 // cube and at 0.4 for the mixed cube's 24 patches (RMS error 2.0 %), which claim twice the
 // tolerance.
 INSTANTIATE_TEST_SUITE_P(BoxRooms, Refinement,
-                         ::testing::Values(Case{"box-corridor-panel", "hierarchical", 0.01},
-                                           Case{"box-cube-rho0.2", "direct", 0.3},
+                         ::testing::Values(Case{"box-cube-rho0.2", "direct", 0.3},
                                            Case{"box-cube-mixed", "direct", 0.4}),
                          [](const auto& param_info) {
                              return testing::test_name(std::string(param_info.param.name) + "_" +

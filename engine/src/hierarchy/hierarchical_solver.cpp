@@ -60,6 +60,11 @@ HierarchicalSystem::LeafLight HierarchicalSystem::light() const {
     return out;
 }
 
+void HierarchicalSystem::show_radiosity(const LeafLight& light) {
+    for (std::size_t e = 0; e < tree_.size(); ++e) tree_[e].radiosity = light.radiosity[e];
+    tree_.pull_up(channels_);
+}
+
 // The solution completes each leaf's factor sum S through its inherited links first (see
 // leaf_completion.h). Completing per root patch instead — each leaf gets the light through its
 // links unscaled plus its missing factor (share − S) times the patch's light per unit factor —
@@ -138,8 +143,7 @@ HierarchicalSystem::LeafLight HierarchicalSystem::patchwise_completed(
         }
     }
     irradiance_ = solution.irradiance;
-    for (std::size_t e = 0; e < tree_.size(); ++e) tree_[e].radiosity = solution.radiosity[e];
-    tree_.pull_up(channels_);  // and each element's radiosity range, which the sensors use
+    show_radiosity(solution);
     rebalance(out, solution);
     return out;
 }

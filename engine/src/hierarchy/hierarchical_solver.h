@@ -48,6 +48,9 @@ public:
         std::vector<Rgb> irradiance, radiosity;
     };
     LeafLight light() const;
+    /// Puts `light`'s radiosity on the tree, with each element's range, where a sensor gather
+    /// reads it (gather_sensors_from_tree); the irradiance stays the solution's.
+    void show_radiosity(const LeafLight& light);
 
     /// The solution had the completed leaves been completed per root patch instead (see
     /// patchwise_completion_change): a second, as plausible answer of the same links, whose

@@ -102,30 +102,4 @@ double relative_rms_difference(const Result& a, const Result& b) {
     return sensors_correspond(a, b) ? sensor_rms_difference(a, b) : surface_rms_difference(a, b);
 }
 
-double largest_relative_difference(const Result& a, const Result& b) {
-    double worst = 0;
-    if (a.surfaces.size() == b.surfaces.size()) {
-        const DarkScales dark = dark_scales(a);
-        for (std::size_t i = 0; i < a.surfaces.size(); ++i) {
-            const SurfaceResult& x = a.surfaces[i];
-            const SurfaceResult& y = b.surfaces[i];
-            if (x.area_m2 < kSmallSurfaceShare * dark.area_m2) continue;
-            worst = std::max({worst,
-                              relative(x.average_irradiance, y.average_irradiance, dark.irradiance),
-                              relative(x.average_radiosity, y.average_radiosity, dark.radiosity)});
-        }
-    }
-    if (a.sensors.size() == b.sensors.size()) {
-        const double dark = sensor_dark_scale(a);
-        for (std::size_t k = 0; k < a.sensors.size(); ++k) {
-            const std::vector<double>& x = a.sensors[k].illuminance;
-            const std::vector<double>& y = b.sensors[k].illuminance;
-            if (x.size() != y.size()) continue;
-            for (std::size_t i = 0; i < x.size(); ++i)
-                worst = std::max(worst, relative(x[i], y[i], dark));
-        }
-    }
-    return worst;
-}
-
 }  // namespace radiant

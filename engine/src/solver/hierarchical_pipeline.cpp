@@ -268,22 +268,29 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         }
         return solved;
     };
-    const std::vector<SolvedElement> solved = solved_leaves(system.light());
+    const HierarchicalSystem::LeafLight light = system.light();
+    const std::vector<SolvedElement> solved = solved_leaves(light);
     // Completing each leaf's factor sum or each patch's gives two answers of the same links; the
     // estimate covers their difference (see HierarchicalSystem::patchwise_completed).
-    std::optional<Result> patchwise;
-    if (outcome.converged) {
-        const HierarchicalSystem::LeafLight other =
-            system.patchwise_completed(control, criteria.receiver_weight);
-        patchwise.emplace();
-        patchwise->surfaces = summarise_surfaces(scene, solved_leaves(other), channels).surfaces;
-    }
+    std::optional<HierarchicalSystem::LeafLight> other;
+    if (outcome.converged) other = system.patchwise_completed(control, criteria.receiver_weight);
     const auto mesh =
         std::make_shared<const SolvedMesh>(leaf_mesh(tree, roots, channels, scene.world_origin));
     // The radiosity is final from here on; the heartbeat shows it while the sensors gather.
     snapshots_.offer(mesh, kLeafMeshVersion);
     report("sensors", 0.9, outcome.iterations);
     result.sensors = gather_sensors(1);
+    // The other answer is compared where the error is stated: at the sensors, gathered alike.
+    std::optional<Result> patchwise;
+    if (other) {
+        patchwise.emplace();
+        patchwise->surfaces = summarise_surfaces(scene, solved_leaves(*other), channels).surfaces;
+        if (!result.sensors.empty()) {
+            system.show_radiosity(*other);
+            patchwise->sensors = gather_sensors(1);
+            system.show_radiosity(light);
+        }
+    }
 
     SurfaceSummary summary = summarise_surfaces(scene, solved, channels);
     result.surfaces = std::move(summary.surfaces);
@@ -304,10 +311,8 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     // stop the result here: a finer solve can be asked for (refine_to_tolerance), and only a
     // result that still misses the tolerance after it is `stopped` (Pipeline::run).
     if (patchwise) {
-        Result surfaces;
-        surfaces.surfaces = result.surfaces;
-        error_estimate = std::max(
-            error_estimate, kCompletionMargin * largest_relative_difference(surfaces, *patchwise));
+        error_estimate = std::max(error_estimate,
+                                  kCompletionMargin * relative_rms_difference(result, *patchwise));
     }
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,

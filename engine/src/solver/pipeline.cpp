@@ -67,12 +67,13 @@ constexpr double kMinRefineRatio = 2;
 constexpr double kMaxRefineRatio = 8;
 // The estimate never claims less than this share of the tolerance: two solutions whose factors
 // are each held far under it differ by their quadratures' noise as much as by their
-// convergence, so the mesh check cannot resolve errors below it (parallel squares: hierarchical
-// errors of 2 % of the tolerance where the check's two solutions agreed to 0.1 % of it). The
-// dense path's factors are far closer (errors of 4e-6 at tolerance 0.1 where the two solutions
-// agreed to 2e-8): its share is smaller, so that a loose tolerance's floor does not swamp an
-// error of 0.1 % (issue 27: an estimate at most 4× an error above 0.1 %, up to tolerance 0.4).
-constexpr double kUnresolvedShare = 0.05;
+// convergence, so the mesh check cannot resolve errors below it (parallel squares 0.5 m apart
+// at 0.01: a hierarchical error of 2.1 % of the tolerance where the check's two solutions
+// differed by 1 % of it). At 0.1 it still lets an error of 0.1 % be estimated within 4 times
+// (issue 27). The dense path's factors are far closer (errors of 4e-6 at tolerance 0.1 where the
+// two solutions agreed to 2e-8): its share is smaller, so that a loose tolerance's floor does
+// not swamp an error of 0.1 % up to tolerance 0.4.
+constexpr double kUnresolvedShare = 0.04;
 constexpr double kDenseUnresolvedShare = 0.01;
 // The dense matrix solvers solve the linear system to this share of the tolerance: their bound
 // on the algebraic error (‖r‖ / (1 − q), area-weighted) is 2–8 times the error it bounds, and
@@ -101,14 +102,13 @@ constexpr std::uint64_t kFirstRefinedMeshVersion = 4;
 // patches — but slower along edges where surfaces meet: the cube's emitting ceiling, which sees
 // mostly the walls' edges, received 5.1 % too little at 24 patches and 1.64 % at 96, and the
 // box rooms' RMS errors at 0.01 are up to 1.25 times the order-1 estimate; kDenseErrorOrder
-// covers them. The difference is measured as the estimate is stated (relative_rms_difference).
-// The hierarchical solver keeps the largest difference over surfaces and sensors, at order 1
-// and kHierarchicalCheckMargin times over.
+// covers them. The difference is measured as the estimate is stated (relative_rms_difference);
+// the hierarchical solver's at order 1 in the tolerance, kHierarchicalCheckMargin times over.
 double richardson_estimate(const std::string& method, const Result& fine, const Result& coarse,
                            double ratio) {
-    if (method == "hierarchical")
-        return kHierarchicalCheckMargin * largest_relative_difference(fine, coarse) / (ratio - 1);
-    return relative_rms_difference(fine, coarse) / (std::pow(ratio, kDenseErrorOrder) - 1);
+    const double difference = relative_rms_difference(fine, coarse);
+    if (method == "hierarchical") return kHierarchicalCheckMargin * difference / (ratio - 1);
+    return difference / (std::pow(ratio, kDenseErrorOrder) - 1);
 }
 
 // How much finer `fine`'s discretisation is than `coarse`'s, in the units its error goes with:
@@ -445,6 +445,8 @@ Result Pipeline::run() {
         refine_to_tolerance(prepared, method, solved);
         record_stage("checking", check_start, rays_ - rays_before, 0);
     }
+    // The sensor sets' and light scenes' estimates derive from the floored one.
+    floor_estimate(solved);
     if (solved.status != SolveStatus::failed) finish_lighting(prepared, solved);
     finish(solved);
     solved.warnings = std::move(warnings);
@@ -455,12 +457,18 @@ void Pipeline::stop_for_memory(const std::string& refusal) {
     if (memory_stop_.empty()) memory_stop_ = refusal;
 }
 
-void Pipeline::finish(Result& solved) {
+void Pipeline::floor_estimate(Result& solved) const {
     const bool dense =
         solved.stats.method != "hierarchical" && solved.stats.method != "monte-carlo";
-    solved.stats.error_estimate =
-        std::max(solved.stats.error_estimate,
-                 (dense ? kDenseUnresolvedShare : kUnresolvedShare) * options_.tolerance);
+    const double least = (dense ? kDenseUnresolvedShare : kUnresolvedShare) * options_.tolerance;
+    solved.stats.error_estimate = std::max(solved.stats.error_estimate, least);
+    for (SensorResult& set : solved.sensors) {
+        if (set.error_estimate > 0) set.error_estimate = std::max(set.error_estimate, least);
+    }
+}
+
+void Pipeline::finish(Result& solved) {
+    floor_estimate(solved);
     // `converged` promises an estimate within the tolerance (contract §3). A result whose finest
     // mesh still misses it is the best one within the limits, as at the time limit.
     if (solved.status == SolveStatus::converged &&

@@ -103,6 +103,8 @@ private:
     /// the one maintenance factor applied to every value, the initial values beside them,
     /// requirements checked.
     void finish_lighting(const PreparedSolve& prepared, Result& result);
+    /// Raises the result's estimate, and each sensor set's, to the least it may claim.
+    void floor_estimate(Result& solved) const;
     /// The steps every finished result takes: the estimate's floor, `stopped` for a result that
     /// misses its tolerance, the stage statistics, the final snapshot and progress.
     void finish(Result& solved);
