@@ -126,7 +126,7 @@ TEST(SensorImportance, UnseenRoomStaysCoarseAndTheSensorsReadTheSame) {
     };
     const Result seen = solve_scene(true);
     const Result unseen = solve_scene(false);
-    ASSERT_EQ(seen.status, SolveStatus::converged) << describe(seen);
+    ASSERT_EQ(seen.status, SolveStatus::converged) << describe(seen) << ": " << seen.stop_reason;
     ASSERT_EQ(unseen.status, SolveStatus::converged) << describe(unseen);
     ASSERT_TRUE(seen.mesh && unseen.mesh);
     EXPECT_LT(triangles_in_room_b(*unseen.mesh), triangles_in_room_b(*seen.mesh) / 2)

@@ -1,6 +1,7 @@
 // The hierarchical path of the pipeline: root patches, element tree, links, sweeps, gather.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 #include "formfactor/enclosure.h"
@@ -296,17 +297,28 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     result.surfaces = std::move(summary.surfaces);
     result.stats.emitted_flux_lm = summary.emitted_flux_lm;
     result.stats.absorbed_flux_lm = summary.absorbed_flux_lm;
-    // In a closed scene every lumen emitted is absorbed: an imbalance is error of the links (and
-    // the estimate above bounds the linked system's only), so the estimate may not claim less —
-    // nor less than the light the links lost before the solver restored it.
+    // In a closed scene every lumen emitted is absorbed, and in none is more absorbed: an
+    // imbalance is error of the links (and the estimate above bounds the linked system's only),
+    // so the estimate may not claim less — nor less than the light the links lost before the
+    // solver restored it. Light made shows where leaves' links miss much of what they face and
+    // the completion of their factor sums fills it with the light of the rest (books packed on a
+    // shelf: their links summed to 0.34 of the 0.91 their hemispheres face, and the furnished
+    // office absorbed 8 % more than it emitted); no finer solve mends that.
     double error_estimate = std::max(outcome.error_estimate, outcome.conservation_defect);
     const bool closed = std::all_of(enclosed.begin(), enclosed.end(), [](char c) { return c; });
-    if (closed && summary.emitted_flux_lm > 0) {
-        error_estimate = std::max(error_estimate,
-                                  std::abs(summary.absorbed_flux_lm / summary.emitted_flux_lm - 1));
-    }
+    const double made =
+        summary.emitted_flux_lm > 0 ? summary.absorbed_flux_lm / summary.emitted_flux_lm - 1 : 0.0;
+    error_estimate = std::max(error_estimate, closed ? std::abs(made) : made);
     const bool stopped = linked.stopped || linked.budget_reached || !outcome.converged ||
                          !(error_estimate <= options_.tolerance);
+    if (!closed && made > options_.tolerance) {
+        char share[32];
+        std::snprintf(share, sizeof share, "%.1f %%", 100 * made);
+        result.stop_reason = std::string("the hierarchical solver's links made ") + share +
+                             " more light than the sources emit, as among densely packed small "
+                             "objects; the monte-carlo method solves such scenes at their "
+                             "sensors";
+    }
     // Errors of the links that the mesh check cannot see; not of the iteration, so they do not
     // stop the result here: a finer solve can be asked for (refine_to_tolerance), and only a
     // result that still misses the tolerance after it is `stopped` (Pipeline::run).
