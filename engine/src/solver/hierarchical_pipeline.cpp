@@ -323,8 +323,12 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     // stop the result here: a finer solve can be asked for (refine_to_tolerance), and only a
     // result that still misses the tolerance after it is `stopped` (Pipeline::run).
     if (patchwise) {
-        error_estimate = std::max(error_estimate,
-                                  kCompletionMargin * relative_rms_difference(result, *patchwise));
+        Result surfaces, other_surfaces;
+        surfaces.surfaces = result.surfaces;
+        other_surfaces.surfaces = patchwise->surfaces;
+        const double difference = std::max(relative_rms_difference(result, *patchwise),
+                                           relative_rms_difference(surfaces, other_surfaces));
+        error_estimate = std::max(error_estimate, kCompletionMargin * difference);
     }
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
