@@ -15,8 +15,10 @@ namespace {
 
 using testing::data_path;
 
-std::vector<double> reference_illuminance() {
-    std::ifstream in(data_path("radiance/room-s2.reference.csv"));
+// The shared reference, or the -dj 1 one made in this project (0.2 % brighter; see
+// tests/data/radiance/README.md).
+std::vector<double> reference_illuminance(const char* file = "radiance/room-s2.reference.csv") {
+    std::ifstream in(data_path(file));
     std::string line;
     std::getline(in, line);
     EXPECT_EQ(line, "x,y,z,irradiance");
@@ -47,7 +49,10 @@ TEST_P(CoarseDenseMesh, EstimateBoundsTheWorkPlaneError) {
     Scene scene = testing::load_scene(data_path("radiance/room-s2.json"));
     scene.settings.method = GetParam();
     scene.settings.tolerance = 0.3;
-    const std::vector<double> reference = reference_illuminance();
+    // Scored as radiant-bench scores it: an estimate tight to 0.2 % cannot be judged against
+    // a reference 0.2 % off.
+    const std::vector<double> reference =
+        reference_illuminance("radiance/room-s2.dj1-reference.csv");
     const Result result = solve(scene, options_from(scene.settings));
     ASSERT_EQ(result.status, SolveStatus::converged) << result.error;
     const auto* plane = testing::find_sensor(result, "workplane");
