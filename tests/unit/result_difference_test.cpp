@@ -1,5 +1,5 @@
-// relative_rms_difference: the measure behind the discretisation and completion parts of the
-// error estimate.
+// relative_rms_difference and surface_rms_difference: the measures behind the discretisation
+// and completion parts of the error estimate.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,6 +68,16 @@ TEST(RelativeRmsDifference, WithoutSensorsSurfacesCountByTheirRelativeDifference
     b.surfaces.push_back({"chair leg", 0.01, 150, 75});
     EXPECT_NEAR(relative_rms_difference(a, b), std::sqrt((2 * 0.0004 + 2 * 0.0016) / 4), 1e-12);
     EXPECT_EQ(relative_rms_difference(a, a), 0.0);
+}
+
+TEST(SurfaceRmsDifference, CountsTheSurfacesWhereThereAreSensorsToo) {
+    Result a = two_surfaces(100, 50), b = two_surfaces(102, 52);
+    SensorResult desk;
+    desk.illuminance = {200, 400};
+    a.sensors.push_back(desk);
+    b.sensors.push_back(desk);
+    EXPECT_EQ(relative_rms_difference(a, b), 0.0);  // the sensors agree
+    EXPECT_NEAR(surface_rms_difference(a, b), std::sqrt((2 * 0.0004 + 2 * 0.0016) / 4), 1e-12);
 }
 
 }  // namespace

@@ -77,8 +77,8 @@ double sensor_rms_difference(const Result& a, const Result& b) {
     return worst;
 }
 
-// Surfaces: the RMS over the surfaces that count of their mean irradiance's and mean
-// radiosity's relative differences.
+}  // namespace
+
 double surface_rms_difference(const Result& a, const Result& b) {
     if (a.surfaces.size() != b.surfaces.size()) return 0;
     const DarkScales dark = dark_scales(a);
@@ -95,8 +95,6 @@ double surface_rms_difference(const Result& a, const Result& b) {
     }
     return count > 0 ? std::sqrt(squares / static_cast<double>(count)) : 0.0;
 }
-
-}  // namespace
 
 double relative_rms_difference(const Result& a, const Result& b) {
     return sensors_correspond(a, b) ? sensor_rms_difference(a, b) : surface_rms_difference(a, b);

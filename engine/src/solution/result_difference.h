@@ -16,4 +16,7 @@ namespace radiant {
 /// sealed dark room does not count as all error.
 double relative_rms_difference(const Result& a, const Result& b);
 
+/// The surfaces' part of relative_rms_difference, whether or not there are sensors.
+double surface_rms_difference(const Result& a, const Result& b);
+
 }  // namespace radiant

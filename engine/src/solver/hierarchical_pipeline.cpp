@@ -327,11 +327,8 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     // both completions share shows there first (two rooms joined by a doorway, at 0.01: sensors
     // 0.14 % off where their difference said 0.026 %, the surfaces' 0.28 %).
     if (patchwise) {
-        Result surfaces, other_surfaces;
-        surfaces.surfaces = result.surfaces;
-        other_surfaces.surfaces = patchwise->surfaces;
         const double difference = std::max(relative_rms_difference(result, *patchwise),
-                                           relative_rms_difference(surfaces, other_surfaces));
+                                           surface_rms_difference(result, *patchwise));
         error_estimate = std::max(error_estimate, kCompletionMargin * difference);
     }
     if (options_.want_mesh) result.mesh = *mesh;

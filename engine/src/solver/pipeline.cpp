@@ -113,10 +113,7 @@ double richardson_estimate(const std::string& method, const Result& fine, const 
                            double ratio) {
     const double difference = relative_rms_difference(fine, coarse);
     if (method == "hierarchical") return kHierarchicalCheckMargin * difference / (ratio - 1);
-    Result fine_surfaces, coarse_surfaces;
-    fine_surfaces.surfaces = fine.surfaces;
-    coarse_surfaces.surfaces = coarse.surfaces;
-    return std::max(difference, relative_rms_difference(fine_surfaces, coarse_surfaces)) /
+    return std::max(difference, surface_rms_difference(fine, coarse)) /
            (std::pow(ratio, kDenseErrorOrder) - 1);
 }
 
