@@ -435,7 +435,10 @@ Result Pipeline::run() {
     }
     if (method == "monte-carlo") {
         Result solved = run_monte_carlo(prepared);
-        if (solved.status != SolveStatus::failed) finish(solved);
+        if (solved.status != SolveStatus::failed) {
+            floor_estimate(solved);
+            finish(solved);
+        }
         solved.warnings = std::move(warnings);
         return solved;
     }
@@ -474,7 +477,6 @@ void Pipeline::floor_estimate(Result& solved) const {
 }
 
 void Pipeline::finish(Result& solved) {
-    floor_estimate(solved);
     // `converged` promises an estimate within the tolerance (contract §3). A result whose finest
     // mesh still misses it is the best one within the limits, as at the time limit.
     if (solved.status == SolveStatus::converged &&

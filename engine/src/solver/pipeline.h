@@ -105,8 +105,9 @@ private:
     void finish_lighting(const PreparedSolve& prepared, Result& result);
     /// Raises the result's estimate, and each sensor set's, to the least it may claim.
     void floor_estimate(Result& solved) const;
-    /// The steps every finished result takes: the estimate's floor, `stopped` for a result that
-    /// misses its tolerance, the stage statistics, the final snapshot and progress.
+    /// The steps every finished result takes once its estimate is floored (floor_estimate):
+    /// `stopped` for a result that misses its tolerance, the stage statistics, the final
+    /// snapshot and progress.
     void finish(Result& solved);
     /// Publishes the final mesh (`final_mesh_`) and the result's sensors as the final snapshot,
     /// with the result's error estimate.
