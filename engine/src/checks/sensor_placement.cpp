@@ -20,10 +20,15 @@ enum class Place { fine, outside, inside_solid };
 // Along the six axes: a point that meets black backs and nothing that reflects is outside the
 // model (looking at a room's outside); one that meets black backs all round is inside a solid,
 // and so is one that meets them on four sides and nothing else (a desk's bottom and back lie on
-// the floor and against a wall, whose fronts a ray may meet first).
-Place place_of(const CheckedScene& input, const Box& bounds, const Vec3& x, std::uint64_t& rays) {
-    if (distance_outside(bounds, x) > kOutsideMargin * input.prepared.diagonal_m)
+// the floor and against a wall, whose fronts a ray may meet first). The rays start where the
+// gather's do, lifted off the point along the sensor's normal: a point on a desk's top (a work
+// plane at the desks' height) measures the room above it, although rays along the top meet the
+// desk's sides there.
+Place place_of(const CheckedScene& input, const Box& bounds, const Vec3& point, const Vec3& normal,
+               std::uint64_t& rays) {
+    if (distance_outside(bounds, point) > kOutsideMargin * input.prepared.diagonal_m)
         return Place::outside;
+    const Vec3 x = point + normal * input.visibility.epsilon();
     int black = 0, lit = 0, escaped = 0;
     for (const Vec3& axis : kAxes) {
         ++rays;
@@ -62,7 +67,8 @@ void check_sensor_placement(const CheckedScene& input, std::vector<Warning>& out
         std::vector<Place> places(checked, Place::fine);
         std::vector<std::uint64_t> point_rays(checked, 0);
         parallel_for(0, checked, [&](std::size_t k) {
-            places[k] = place_of(input, bounds, points[k * stride], point_rays[k]);
+            places[k] = place_of(input, bounds, points[k * stride], prepared.sensors[s].normal,
+                                 point_rays[k]);
         });
         for (const std::uint64_t r : point_rays) rays += r;
         const SensorSet& given = input.scene.sensors[s];
