@@ -124,6 +124,32 @@ TEST(ModellingChecks, WarningsPointAtTheDocumentsSurfaces) {
     EXPECT_EQ(got[0].pointer, "/surfaces/9");
 }
 
+// Many warnings of one kind are one mistake to fix: a name used 31 times gives one duplicate_name,
+// and past 20 warnings of one code a last one says how many more there are.
+TEST(ModellingChecks, ManyOfOneMistakeAreSummedUp) {
+    Scene scene = load(warnings_dir() / "desks-facing-in.json");
+    Surface desk = scene.surfaces[1];
+    desk.pointer.clear();  // each copy at its own index
+    for (int copy = 0; copy < 30; ++copy) scene.surfaces.push_back(desk);
+    const std::vector<Warning> got = check_modelling(scene);
+    std::vector<Warning> duplicates, facing_in;
+    for (const Warning& w : got) {
+        if (w.code == "duplicate_name") duplicates.push_back(w);
+        if (w.code == "box_faces_in") facing_in.push_back(w);
+    }
+    ASSERT_EQ(duplicates.size(), 1u) << listed(got);
+    EXPECT_EQ(duplicates[0].pointer, "/surfaces/3/name");
+    EXPECT_NE(duplicates[0].message.find("is also used by /surfaces/1 and 29 more"),
+              std::string::npos)
+        << duplicates[0].message;
+    // 32 boxes face in: 20 listed, then the 21st with the count of the 12 not listed.
+    ASSERT_EQ(facing_in.size(), 21u) << listed(got);
+    EXPECT_EQ(facing_in[19].pointer, "/surfaces/20/box");
+    EXPECT_EQ(facing_in[20].pointer, "/surfaces/21/box");
+    EXPECT_EQ(facing_in[20].message.rfind("12 more box_faces_in warnings are not listed", 0), 0u)
+        << facing_in[20].message;
+}
+
 TEST(ModellingChecks, SolvedResultsCarryTheWarningsAndJsonAlwaysHasThem) {
     SolveOptions options;
     options.tolerance = 0.1;

@@ -7,8 +7,9 @@
 
 namespace radiant {
 
-/// duplicate_name at every later use of a name already used in the same list. Surfaces of one
-/// imported model (one document surface) share its name by design and are not reported.
+/// duplicate_name once per name used more than once in the same list, at its second use.
+/// Surfaces of one imported model (one document surface) share its name by design and are not
+/// reported.
 void check_duplicate_names(const Scene& scene, std::vector<Warning>& out);
 
 }  // namespace radiant

@@ -1,6 +1,7 @@
 #include "checks/modelling_checks.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "checks/black_backs.h"
 #include "checks/duplicate_names.h"
@@ -11,6 +12,35 @@
 #include "checks/units_check.h"
 
 namespace radiant {
+namespace {
+
+// Warnings of one code past this many are summed up in one more: 776 boxes facing in are one
+// mistake to fix, and a result or an error listing each of them hides every other warning.
+constexpr std::size_t kMaxWarningsPerCode = 20;
+
+/// Keeps the first kMaxWarningsPerCode warnings of each code; the next one, at its own pointer,
+/// says how many more there were.
+std::vector<Warning> capped_per_code(std::vector<Warning> all) {
+    std::unordered_map<std::string, std::size_t> count;
+    for (const Warning& w : all) ++count[w.code];
+    std::unordered_map<std::string, std::size_t> seen;
+    std::vector<Warning> out;
+    for (Warning& w : all) {
+        const std::size_t k = ++seen[w.code];
+        if (k <= kMaxWarningsPerCode) {
+            out.push_back(std::move(w));
+        } else if (k == kMaxWarningsPerCode + 1) {
+            const std::size_t more = count[w.code] - kMaxWarningsPerCode;
+            out.push_back({w.code,
+                           std::to_string(more) + " more " + w.code +
+                               " warnings are not listed; the first of them: " + w.message,
+                           w.pointer});
+        }
+    }
+    return out;
+}
+
+}  // namespace
 
 Box model_bounds(const PreparedScene& prepared) {
     Box box;
@@ -45,7 +75,7 @@ std::vector<Warning> modelling_warnings(const CheckedScene& input, std::uint64_t
     const std::vector<bool> misplaced = check_luminaire_placement(input, paths, out);
     check_black_backs(input, paths, misplaced, out);
     check_sensor_placement(input, out, rays);
-    return out;
+    return capped_per_code(std::move(out));
 }
 
 }  // namespace radiant
