@@ -45,15 +45,14 @@ struct SolveStats {
     double seconds = 0;
     double unshot_fraction = 0;  ///< unshot power / emitted power (0 for non-shooting solvers)
     /// Relative error the answer is estimated not to exceed: the sensors' RMS error relative to
-    /// their mean (worst sensor set) for the Monte Carlo method and the dense radiosity
-    /// solvers' mesh check (without sensors: the RMS of the surfaces' relative errors); for the
-    /// radiosity methods at least the bound on the linear system's area-weighted L1 error,
-    /// ‖r‖/(1−q) / Σ A·B, and for the hierarchical one its largest surface or sensor difference
-    /// (docs/accuracy.md).
+    /// their mean (worst sensor set; without sensors, the RMS of the surfaces' relative errors),
+    /// measured so by every method's checks; for the radiosity methods at least the bound on the
+    /// linear system's area-weighted L1 error, ‖r‖/(1−q) / Σ A·B (docs/accuracy.md).
     double error_estimate = 0;
-    double emitted_flux_lm = 0;   ///< from emitting surfaces and luminaires
-    double absorbed_flux_lm = 0;  ///< Σ A (1−ρ) H over all surface sides
-    int channels = 1;             ///< 1 for gray scenes, 3 for RGB
+    double emitted_flux_lm = 0;  ///< from emitting surfaces and luminaires
+    /// Σ A (1−ρ) H over the surfaces' reflecting sides (not the black backs of one-sided ones).
+    double absorbed_flux_lm = 0;
+    int channels = 1;  ///< 1 for gray scenes, 3 for RGB
     int threads = 1;
     ErrorParts error_parts;
     std::vector<StageStats> stages;
