@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -19,6 +18,7 @@
 #include "photometric_files.h"
 #include "radiance_export.h"
 #include "radiance_run.h"
+#include "reference_csv.h"
 #include "scene/prepared_scene.h"
 #include "scene_files.h"
 
@@ -46,14 +46,8 @@ fs::path work_dir(const std::string& name) {
 }
 
 std::vector<double> reference_illuminance() {
-    std::ifstream in(testing::data_path("radiance/room-s2.reference.csv"));
-    std::string line;
-    std::getline(in, line);
-    std::vector<double> values;
-    while (std::getline(in, line)) {
-        if (!line.empty()) values.push_back(std::stod(line.substr(line.rfind(',') + 1)));
-    }
-    return values;
+    return testing::read_reference_csv(testing::data_path("radiance/room-s2.reference.csv"))
+        .illuminance;
 }
 
 // The command line of the converter's README for a scene with emitting surfaces.

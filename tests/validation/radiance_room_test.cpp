@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "reference_csv.h"
 #include "scene_files.h"
 
 namespace radiant {
@@ -18,27 +18,7 @@ using testing::data_path;
 // The shared reference, or the -dj 1 one made in this project (0.2 % brighter; see
 // tests/data/radiance/README.md).
 std::vector<double> reference_illuminance(const char* file = "radiance/room-s2.reference.csv") {
-    std::ifstream in(data_path(file));
-    std::string line;
-    std::getline(in, line);
-    EXPECT_EQ(line, "x,y,z,irradiance");
-    std::vector<double> values;
-    while (std::getline(in, line)) {
-        if (!line.empty()) values.push_back(std::stod(line.substr(line.rfind(',') + 1)));
-    }
-    return values;
-}
-
-// The work plane's RMS error against the reference, relative to its mean (as radiant-bench
-// measures it).
-double normalised_rms(const std::vector<double>& got, const std::vector<double>& reference) {
-    double sum_sq = 0, sum_ref = 0;
-    for (std::size_t i = 0; i < reference.size(); ++i) {
-        sum_sq += (got[i] - reference[i]) * (got[i] - reference[i]);
-        sum_ref += reference[i];
-    }
-    const double n = static_cast<double>(reference.size());
-    return std::sqrt(sum_sq / n) / (sum_ref / n);
+    return testing::read_reference_csv(data_path(file)).illuminance;
 }
 
 // At a loose tolerance the dense mesh is the room's coarsest, so the discretisation check's
@@ -58,7 +38,7 @@ TEST_P(CoarseDenseMesh, EstimateBoundsTheWorkPlaneError) {
     const auto* plane = testing::find_sensor(result, "workplane");
     ASSERT_NE(plane, nullptr);
     ASSERT_EQ(plane->illuminance.size(), reference.size());
-    const double error = normalised_rms(plane->illuminance, reference);
+    const double error = testing::normalised_rms(plane->illuminance, reference);
     EXPECT_GE(result.stats.error_estimate, error)
         << result.stats.patches << " patches, discretisation part "
         << result.stats.error_parts.discretisation;
