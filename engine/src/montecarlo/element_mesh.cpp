@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parallel/fork_join.h"
+#include "parallel/per_thread.h"
+#include "radiant/box.h"
+
 namespace radiant {
 namespace {
 
@@ -85,12 +89,46 @@ ElementMesh::ElementMesh(const PreparedScene& scene, double max_edge_m) {
     for (std::size_t i = 0; i < elements_.size(); ++i) {
         MeshElement& e = elements_[i];
         e.front = static_cast<int>(sides_.size());
-        sides_.push_back({static_cast<int>(i), false});
+        sides_.push_back({static_cast<int>(i), false, e.area_m2});
         if (scene.materials[static_cast<std::size_t>(e.material)].two_sided) {
             e.back = static_cast<int>(sides_.size());
-            sides_.push_back({static_cast<int>(i), true});
+            sides_.push_back({static_cast<int>(i), true, e.area_m2});
         }
     }
+}
+
+void ElementMesh::measure_open_areas(const Visibility& visibility, double near_m,
+                                     std::uint64_t& rays) {
+    // The centroids of the element's four midpoint triangles.
+    constexpr double kWeights[4][3] = {{4.0 / 6, 1.0 / 6, 1.0 / 6},
+                                       {1.0 / 6, 4.0 / 6, 1.0 / 6},
+                                       {1.0 / 6, 1.0 / 6, 4.0 / 6},
+                                       {1.0 / 3, 1.0 / 3, 1.0 / 3}};
+    const double eps = visibility.epsilon();
+    Box bounds;
+    for (const MeshElement& e : elements_) {
+        bounds.add(e.triangle.a);
+        bounds.add(e.triangle.b);
+        bounds.add(e.triangle.c);
+    }
+    const double t_max = 2 * length(bounds.size()) + near_m;
+    PerThread<std::uint64_t> counted;
+    parallel_for(0, sides_.size(), [&](std::size_t s) {
+        ElementSide& side = sides_[s];
+        const MeshElement& e = elements_[static_cast<std::size_t>(side.element)];
+        const Vec3 n = side.back ? -e.normal : e.normal;
+        int open = 0;
+        for (const auto& w : kWeights) {
+            const Vec3 p = e.triangle.a * w[0] + e.triangle.b * w[1] + e.triangle.c * w[2];
+            const RayHit hit = visibility.intersect(p + n * eps, n, t_max);
+            ++counted.local();
+            const bool hidden =
+                hit.triangle >= 0 && (hit.t < near_m || side_hit(hit.triangle, n) < 0);
+            if (!hidden) ++open;
+        }
+        side.open_area_m2 = e.area_m2 * open / 4.0;
+    });
+    rays += counted.combine([](std::uint64_t a, std::uint64_t b) { return a + b; });
 }
 
 std::vector<Triangle> ElementMesh::triangles() const {

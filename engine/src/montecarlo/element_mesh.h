@@ -4,6 +4,7 @@
 // nothing beyond the ray itself.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "scene/prepared_scene.h"
@@ -29,6 +30,9 @@ struct MeshElement {
 struct ElementSide {
     int element = 0;
     bool back = false;
+    /// The part of the element's area that light reaches on this side (see measure_open_areas):
+    /// the photons' flux is spread over it, not over the part a surface right in front hides.
+    double open_area_m2 = 0;
 };
 
 struct ElementCount {
@@ -50,6 +54,12 @@ public:
 
     /// One triangle per element for the ray tracer (index = element).
     std::vector<Triangle> triangles() const;
+
+    /// Each side's open area, from four points of its element, each looking along the side's
+    /// normal on `visibility` (over triangles()): a point is hidden when a surface lies within
+    /// `near_m` in front of it (a ceiling panel hung 1 cm under the ceiling, a book against its
+    /// neighbour), or when it looks at a black back (it lies inside a solid). Counts the rays.
+    void measure_open_areas(const Visibility& visibility, double near_m, std::uint64_t& rays);
 
     /// The side a ray travelling along `direction` lands on when it hits `element`: its front
     /// when it arrives against the normal, else its back (−1 if black).

@@ -31,7 +31,7 @@ PhotonField::PhotonField(const PreparedScene& scene, const ElementMesh& mesh, st
     batch_.assign(sides * kBatches, 0.0f);
     inverse_area_.resize(sides);
     for (std::size_t s = 0; s < sides; ++s) {
-        const double area = mesh[static_cast<std::size_t>(mesh.sides()[s].element)].area_m2;
+        const double area = mesh.sides()[s].open_area_m2;
         inverse_area_[s] = area > 0 ? 1 / area : 0.0;
     }
 }

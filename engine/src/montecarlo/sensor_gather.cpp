@@ -234,10 +234,7 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
         return s.back ? o.back : o.front;
     };
     auto area = [&](int side) {
-        return side < 0
-                   ? 0.0
-                   : mesh_[static_cast<std::size_t>(sides[static_cast<std::size_t>(side)].element)]
-                         .area_m2;
+        return side < 0 ? 0.0 : sides[static_cast<std::size_t>(side)].open_area_m2;
     };
     std::vector<GatheredPoint> out(points_.size());
     parallel_for(0, points_.size(), [&](std::size_t i) {
