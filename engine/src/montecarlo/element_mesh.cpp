@@ -5,7 +5,6 @@
 
 #include "parallel/fork_join.h"
 #include "parallel/per_thread.h"
-#include "radiant/box.h"
 
 namespace radiant {
 namespace {
@@ -105,13 +104,6 @@ void ElementMesh::measure_open_areas(const Visibility& visibility, double near_m
                                        {1.0 / 6, 1.0 / 6, 4.0 / 6},
                                        {1.0 / 3, 1.0 / 3, 1.0 / 3}};
     const double eps = visibility.epsilon();
-    Box bounds;
-    for (const MeshElement& e : elements_) {
-        bounds.add(e.triangle.a);
-        bounds.add(e.triangle.b);
-        bounds.add(e.triangle.c);
-    }
-    const double t_max = 2 * length(bounds.size()) + near_m;
     PerThread<std::uint64_t> counted;
     parallel_for(0, sides_.size(), [&](std::size_t s) {
         ElementSide& side = sides_[s];
@@ -120,11 +112,8 @@ void ElementMesh::measure_open_areas(const Visibility& visibility, double near_m
         int open = 0;
         for (const auto& w : kWeights) {
             const Vec3 p = e.triangle.a * w[0] + e.triangle.b * w[1] + e.triangle.c * w[2];
-            const RayHit hit = visibility.intersect(p + n * eps, n, t_max);
             ++counted.local();
-            const bool hidden =
-                hit.triangle >= 0 && (hit.t < near_m || side_hit(hit.triangle, n) < 0);
-            if (!hidden) ++open;
+            if (visibility.intersect(p + n * eps, n, near_m).triangle < 0) ++open;
         }
         side.open_area_m2 = e.area_m2 * open / 4.0;
     });

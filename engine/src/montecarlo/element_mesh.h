@@ -58,7 +58,9 @@ public:
     /// Each side's open area, from four points of its element, each looking along the side's
     /// normal on `visibility` (over triangles()): a point is hidden when a surface lies within
     /// `near_m` in front of it (a ceiling panel hung 1 cm under the ceiling, a book against its
-    /// neighbour), or when it looks at a black back (it lies inside a solid). Counts the rays.
+    /// neighbour, a cabinet's bottom on the floor). A surface farther away hides nothing, even
+    /// by its black back: a ceiling wound the wrong way must not darken the floor. Counts the
+    /// rays.
     void measure_open_areas(const Visibility& visibility, double near_m, std::uint64_t& rays);
 
     /// The side a ray travelling along `direction` lands on when it hits `element`: its front
