@@ -4,7 +4,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <map>
+#include <string_view>
+#include <utility>
 
 #include "import/polygon_with_holes.h"
 #include "json_text.h"
@@ -108,15 +111,17 @@ Json Converter::convert(const Json& model) {
     const Json* type = get(model, "type");
     if (!type || *type != "Model")
         report(root / "type", "a Honeybee model has \"type\": \"Model\"");
-    static const std::map<std::string, std::string> units{{"Meters", "m"},
-                                                          {"Millimeters", "mm"},
-                                                          {"Centimeters", "cm"},
-                                                          {"Feet", "ft"},
-                                                          {"Inches", "in"}};
+    constexpr std::pair<std::string_view, std::string_view> units[] = {{"Meters", "m"},
+                                                                       {"Millimeters", "mm"},
+                                                                       {"Centimeters", "cm"},
+                                                                       {"Feet", "ft"},
+                                                                       {"Inches", "in"}};
     std::string unit = "m";
     if (const Json* u = get(model, "units")) {
-        const auto it = u->is_string() ? units.find(u->get<std::string>()) : units.end();
-        if (it == units.end()) {
+        const auto it = std::find_if(std::begin(units), std::end(units), [&](const auto& named) {
+            return u->is_string() && u->get<std::string>() == named.first;
+        });
+        if (it == std::end(units)) {
             report(root / "units",
                    "units must be Meters, Millimeters, Centimeters, Feet or Inches");
         } else {
@@ -287,14 +292,16 @@ void Converter::room(const Json& room, const Ptr& p) {
     for (std::size_t k = 0; faces && k < faces->size(); ++k) {
         const Json& face = (*faces)[k];
         const Ptr at = p / "faces" / k;
-        static const std::map<std::string, const Default*> types{{"Floor", &kFloor},
-                                                                 {"Wall", &kWall},
-                                                                 {"RoofCeiling", &kCeiling},
-                                                                 {"AirBoundary", nullptr}};
+        static const std::pair<std::string_view, const Default*> types[] = {
+            {"Floor", &kFloor},
+            {"Wall", &kWall},
+            {"RoofCeiling", &kCeiling},
+            {"AirBoundary", nullptr}};
         const Json* type = get(face, "face_type");
-        const auto it =
-            type && type->is_string() ? types.find(type->get<std::string>()) : types.end();
-        if (it == types.end()) {
+        const auto it = std::find_if(std::begin(types), std::end(types), [&](const auto& named) {
+            return type && type->is_string() && type->get<std::string>() == named.first;
+        });
+        if (it == std::end(types)) {
             report(at / "face_type", "face_type must be Floor, Wall, RoofCeiling or AirBoundary");
             continue;
         }
@@ -375,7 +382,7 @@ HoneybeeOutcome honeybee_to_scene(std::string_view hbjson_text) {
     if (!outcome.problems.empty()) return outcome;
     // The scene's own checks (planarity, zero area...), reported at the Honeybee object.
     for (Problem p : parse_scene(scene.dump()).problems) {
-        static const std::string prefix = "/surfaces/";
+        constexpr std::string_view prefix = "/surfaces/";
         if (p.pointer.rfind(prefix, 0) == 0) {
             const std::size_t index = std::stoul(p.pointer.substr(prefix.size()));
             if (index < converter.surface_pointers_.size()) {

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include "import/scene_relative_file.h"
 #include "import/surface_import.h"
@@ -27,12 +29,13 @@ constexpr std::string_view kFormat = "radiant-scene/1";
 /// The part of a pointer that names one scene entity: "/surfaces/3", "/materials/wall",
 /// "/settings". Entities are the unit at which structural damage hides semantic problems.
 std::string entity_of(const std::string& pointer) {
-    static const std::set<std::string, std::less<>> lists{"materials", "surfaces",  "luminaires",
-                                                          "sensors",   "observers", "light_scenes"};
+    constexpr std::string_view lists[] = {"materials", "surfaces",  "luminaires",
+                                          "sensors",   "observers", "light_scenes"};
     const std::size_t first = pointer.find('/', 1);
     if (first == std::string::npos) return pointer;
     const std::string_view head = std::string_view(pointer).substr(1, first - 1);
-    if (!lists.contains(head)) return pointer.substr(0, first);
+    if (std::find(std::begin(lists), std::end(lists), head) == std::end(lists))
+        return pointer.substr(0, first);
     return pointer.substr(0, pointer.find('/', first + 1));
 }
 
@@ -700,7 +703,7 @@ Settings SceneReader::settings(const Json& j, const Ptr& p) {
     }
     if (const Json* m = member(j, p, "method", false)) {
         // The engine's own list, so the parser never accepts a method the engine lacks.
-        const auto& methods = solver_names();
+        const std::vector<std::string> methods = solver_names();
         if (m->is_string() &&
             std::find(methods.begin(), methods.end(), m->get<std::string>()) != methods.end()) {
             s.method = m->get<std::string>();
@@ -727,7 +730,7 @@ void limit_problems(std::vector<Problem>& problems, std::size_t uncounted) {
 
 /// check_scene sees a grid only as its expanded points; point the user at the grid instead.
 std::string document_pointer(const std::string& pointer, const std::set<std::size_t>& grids) {
-    static const std::string prefix = "/sensors/";
+    constexpr std::string_view prefix = "/sensors/";
     if (pointer.rfind(prefix, 0) != 0) return pointer;
     const std::size_t slash = pointer.find('/', prefix.size());
     if (slash == std::string::npos || pointer.compare(slash, 7, "/points") != 0) return pointer;
@@ -740,7 +743,7 @@ std::string document_pointer(const std::string& pointer, const std::set<std::siz
 void to_document_surface(Problem& problem,
                          const std::vector<std::pair<std::size_t, std::string>>& origins,
                          const Scene& scene) {
-    static const std::string prefix = "/surfaces/";
+    constexpr std::string_view prefix = "/surfaces/";
     const std::string& pointer = problem.pointer;
     if (pointer.rfind(prefix, 0) != 0 || pointer.size() == prefix.size()) return;
     const std::size_t slash = std::min(pointer.find('/', prefix.size()), pointer.size());
@@ -748,8 +751,8 @@ void to_document_surface(Problem& problem,
     if (engine >= origins.size()) return;
     const auto& [index, key] = origins[engine];
     const std::string rest = pointer.substr(slash);
-    const std::string surface = prefix + std::to_string(index);
-    static const std::string faces = "/mesh/faces/";
+    const std::string surface = std::string(prefix) + std::to_string(index);
+    constexpr std::string_view faces = "/mesh/faces/";
     if (key.empty() || rest.rfind("/mesh", 0) != 0) {
         problem.pointer = surface + rest;
         return;

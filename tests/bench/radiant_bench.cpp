@@ -340,7 +340,7 @@ int main(int argc, char** argv) {
     peer_options.work_dir = out_stem + "-radiance";
     if (!radiance_settings.empty()) peer_options.ladder = radiance_settings;
 
-    const auto& solvers = solver_names();
+    const std::vector<std::string> solvers = solver_names();
     auto known_method = [&](const std::string& m) {
         return std::find(solvers.begin(), solvers.end(), m) != solvers.end();
     };

@@ -188,7 +188,7 @@ TEST(TaskArea, BadRequirementsAreRefusedWithTheirPointer) {
 }
 
 TEST(ActivityTable, OfficesAreThere) {
-    const auto& table = en12464_activities();
+    const std::span<const Activity> table = en12464_activities();
     const auto it = std::find_if(table.begin(), table.end(),
                                  [](const Activity& a) { return a.reference == "5.26.2"; });
     ASSERT_NE(it, table.end());

@@ -2,7 +2,9 @@
 // EN 12464-1 activity table, and light scenes as weighted sums of the groups' contributions.
 #pragma once
 
+#include <span>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -13,8 +15,8 @@ namespace radiant {
 
 /// One row of the built-in EN 12464-1:2011 table (Table 5.26, offices).
 struct Activity {
-    std::string reference;  ///< the standard's reference number, e.g. "5.26.2"
-    std::string name;
+    std::string_view reference;  ///< the standard's reference number, e.g. "5.26.2"
+    std::string_view name;
     double em_lx = 0;  ///< maintained illuminance Ēm on the task area, lux
     double u0 = 0;     ///< uniformity U₀
     double ugr_l = 0;  ///< unified glare rating limit UGR_L
@@ -22,7 +24,7 @@ struct Activity {
 };
 
 /// The activities a requirement may name by reference number.
-const std::vector<Activity>& en12464_activities();
+std::span<const Activity> en12464_activities();
 
 /// A light scene from `solved`'s group contributions (Result::groups): every sensor set and
 /// observer as a solve of the scene with each group dimmed would give them, within the groups'

@@ -40,7 +40,7 @@ std::size_t physical_memory_bytes();
 SolveOptions options_from(const Settings& settings);
 
 /// The solver names `method` accepts.
-const std::vector<std::string>& solver_names();
+std::vector<std::string> solver_names();
 
 /// Cooperative cancellation; `cancel()` may be called from any thread.
 class CancellationToken {

@@ -10,24 +10,23 @@ namespace {
 constexpr std::pair<double, double> kSurroundingSteps[] = {{750, 500}, {500, 300}, {300, 200}};
 constexpr double kSurroundingU0 = 0.40;
 
+// EN 12464-1:2011 Table 5.26 (offices): Ēm, U₀, UGR_L, Ra.
+constexpr Activity kOffices[] = {
+    {"5.26.1", "Filing, copying, etc.", 300, 0.40, 19, 80},
+    {"5.26.2", "Writing, typing, reading, data processing", 500, 0.60, 19, 80},
+    {"5.26.3", "Technical drawing", 750, 0.70, 16, 80},
+    {"5.26.4", "CAD work stations", 500, 0.60, 19, 80},
+    {"5.26.5", "Conference and meeting rooms", 500, 0.60, 19, 80},
+    {"5.26.6", "Reception desk", 300, 0.60, 22, 80},
+    {"5.26.7", "Archives", 200, 0.40, 25, 80},
+};
+
 }  // namespace
 
-const std::vector<Activity>& en12464_activities() {
-    // EN 12464-1:2011 Table 5.26 (offices): Ēm, U₀, UGR_L, Ra.
-    static const std::vector<Activity> table{
-        {"5.26.1", "Filing, copying, etc.", 300, 0.40, 19, 80},
-        {"5.26.2", "Writing, typing, reading, data processing", 500, 0.60, 19, 80},
-        {"5.26.3", "Technical drawing", 750, 0.70, 16, 80},
-        {"5.26.4", "CAD work stations", 500, 0.60, 19, 80},
-        {"5.26.5", "Conference and meeting rooms", 500, 0.60, 19, 80},
-        {"5.26.6", "Reception desk", 300, 0.60, 22, 80},
-        {"5.26.7", "Archives", 200, 0.40, 25, 80},
-    };
-    return table;
-}
+std::span<const Activity> en12464_activities() { return kOffices; }
 
 const Activity* find_activity(std::string_view reference) {
-    const auto& table = en12464_activities();
+    const std::span<const Activity> table = en12464_activities();
     const auto it = std::find_if(table.begin(), table.end(),
                                  [&](const Activity& a) { return a.reference == reference; });
     return it == table.end() ? nullptr : &*it;
@@ -39,7 +38,7 @@ AppliedRequirement apply_requirement(const Requirement& r) {
     if (r.activity) {
         if (const Activity* a = find_activity(*r.activity)) {
             out.source = "table";
-            out.activity = a->reference + " " + a->name;
+            out.activity = std::string(a->reference) + " " + std::string(a->name);
             out.em_lx = a->em_lx;
             out.u0 = a->u0;
             out.ugr_l = a->ugr_l;

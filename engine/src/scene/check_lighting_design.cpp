@@ -110,7 +110,7 @@ private:
         if (r.activity && !find_activity(*r.activity)) {
             std::string known;
             for (const Activity& a : en12464_activities())
-                known += (known.empty() ? "" : ", ") + a.reference;
+                known += (known.empty() ? "" : ", ") + std::string(a.reference);
             report(p + "/activity",
                    "unknown activity \"" + *r.activity + "\" (known: " + known + ")");
         }

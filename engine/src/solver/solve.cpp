@@ -23,7 +23,7 @@ std::string describe(const std::vector<Problem>& problems) {
 }
 
 bool known_method(const std::string& method) {
-    const auto& names = solver_names();
+    const std::vector<std::string> names = solver_names();
     return std::find(names.begin(), names.end(), method) != names.end();
 }
 
@@ -76,10 +76,8 @@ SolveOptions options_from(const Settings& settings) {
     return o;
 }
 
-const std::vector<std::string>& solver_names() {
-    static const std::vector<std::string> names{"auto",   "monte-carlo",  "hierarchical", "direct",
-                                                "jacobi", "gauss-seidel", "shooting"};
-    return names;
+std::vector<std::string> solver_names() {
+    return {"auto", "monte-carlo", "hierarchical", "direct", "jacobi", "gauss-seidel", "shooting"};
 }
 
 const char* to_string(SolveStatus status) {
