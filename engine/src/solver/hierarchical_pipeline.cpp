@@ -324,8 +324,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     // stop the result here: a finer solve can be asked for (refine_to_tolerance), and only a
     // result that still misses the tolerance after it is `stopped` (Pipeline::run).
     // The completion's difference counts on the surfaces even where there are sensors: a bias
-    // both completions share shows there first (two rooms joined by a doorway, at 0.01: sensors
-    // 0.14 % off where their difference said 0.026 %, the surfaces' 0.28 %).
+    // both completions share shows there first (office-x1 at 0.01: sensors 0.10 % off Monte
+    // Carlo at 0.001, where their difference gave an estimate of 0.040 %;
+    // tests/bench/results/hierarchical-estimate.md).
     if (patchwise) {
         const double difference = std::max(relative_rms_difference(result, *patchwise),
                                            surface_rms_difference(result, *patchwise));
