@@ -13,9 +13,11 @@
 
 #include <boost/asio/buffer.hpp>
 
+#include "radiant/proto/scene_json.h"
 #include "radiant/server/router.h"
 #include "radiant/server/session.h"
 #include "radiant/server/sqlite_job_store.h"
+#include "radiant/solve.h"
 
 namespace {
 
@@ -81,14 +83,37 @@ std::optional<Request> parse_request(const std::uint8_t* data, std::size_t size)
     return parser.release();
 }
 
+/// libFuzzer ends a run with exit(), which destroys statics in the reverse order of their making
+/// while the service's worker may still be solving: what a solve makes on first use (the log's
+/// registry, OpenMesh's log streams, which every solve calls) must be made before the service,
+/// so that it outlives the service's destructor, which joins the worker. A small room solved
+/// once by every method makes it.
+bool make_what_solves_make_on_first_use() {
+    spdlog::set_level(spdlog::level::off);
+    const radiant::proto::ParseOutcome room = radiant::proto::parse_scene(R"({
+        "format": "radiant-scene/1",
+        "materials": {"wall": {"reflectance": 0.5}},
+        "surfaces": [{"name": "room", "material": "wall",
+                      "box": {"min": [0, 0, 0], "max": [2, 2, 2], "facing": "in"}}],
+        "luminaires": [{"name": "bulb", "position": [1, 1, 1.5], "flux": 100,
+                        "distribution": "isotropic"}],
+        "sensors": [{"name": "plane", "points": [[1, 1, 0.5]], "normal": [0, 0, 1]}]})");
+    for (const std::string& method : radiant::solver_names()) {
+        radiant::SolveOptions options = radiant::options_from(room.scene->settings);
+        options.method = method;
+        options.tolerance = 0.3;
+        options.threads = 1;
+        radiant::solve(*room.scene, options);
+    }
+    return true;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const fs::path dir =
         fs::temp_directory_path() / ("radiant_http_fuzz_" + std::to_string(getpid()));
-    // The log's registry before the service: statics die in reverse order, and the service's
-    // queue still logs while it shuts down at exit.
-    [[maybe_unused]] static const bool quiet = (spdlog::set_level(spdlog::level::off), true);
+    [[maybe_unused]] static const bool made = make_what_solves_make_on_first_use();
     static std::unique_ptr<Service> service;
     static std::size_t runs = 0;
     if (runs++ % 1000 == 0) {
