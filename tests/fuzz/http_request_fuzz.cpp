@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <boost/asio/buffer.hpp>
@@ -98,6 +99,7 @@ bool make_what_solves_make_on_first_use() {
         "luminaires": [{"name": "bulb", "position": [1, 1, 1.5], "flux": 100,
                         "distribution": "isotropic"}],
         "sensors": [{"name": "plane", "points": [[1, 1, 0.5]], "normal": [0, 0, 1]}]})");
+    if (!room.ok()) throw std::logic_error("the warm-up room: " + room.problems.front().message);
     for (const std::string& method : radiant::solver_names()) {
         radiant::SolveOptions options = radiant::options_from(room.scene->settings);
         options.method = method;
