@@ -55,6 +55,17 @@ private:
         return it == object.end() ? nullptr : &*it;
     }
 
+    /// The entry of `table` that `value` names, when `value` is a string that names one.
+    template <typename T, std::size_t N>
+    static const std::pair<std::string_view, T>* named(
+        const std::pair<std::string_view, T> (&table)[N], const Json* value) {
+        if (!value || !value->is_string()) return nullptr;
+        const std::string& name = value->get_ref<const std::string&>();
+        const auto it = std::find_if(std::begin(table), std::end(table),
+                                     [&](const auto& entry) { return entry.first == name; });
+        return it == std::end(table) ? nullptr : it;
+    }
+
     /// The value at the end of a chain of keys, when every step is an object that has it.
     static const Json* path(const Json& object, std::initializer_list<const char*> keys) {
         const Json* j = &object;
@@ -118,10 +129,8 @@ Json Converter::convert(const Json& model) {
                                                                        {"Inches", "in"}};
     std::string unit = "m";
     if (const Json* u = get(model, "units")) {
-        const auto it = std::find_if(std::begin(units), std::end(units), [&](const auto& named) {
-            return u->is_string() && u->get<std::string>() == named.first;
-        });
-        if (it == std::end(units)) {
+        const auto* it = named(units, u);
+        if (!it) {
             report(root / "units",
                    "units must be Meters, Millimeters, Centimeters, Feet or Inches");
         } else {
@@ -297,11 +306,8 @@ void Converter::room(const Json& room, const Ptr& p) {
             {"Wall", &kWall},
             {"RoofCeiling", &kCeiling},
             {"AirBoundary", nullptr}};
-        const Json* type = get(face, "face_type");
-        const auto it = std::find_if(std::begin(types), std::end(types), [&](const auto& named) {
-            return type && type->is_string() && type->get<std::string>() == named.first;
-        });
-        if (it == std::end(types)) {
+        const auto* it = named(types, get(face, "face_type"));
+        if (!it) {
             report(at / "face_type", "face_type must be Floor, Wall, RoofCeiling or AirBoundary");
             continue;
         }
