@@ -129,7 +129,9 @@ std::vector<SensorResult> gather_sensors_from_tree(const PreparedScene& scene,
         parallel_for(0, set.points.size(), [&](std::size_t i) {
             std::uint64_t& local = ray_count.local();
             const Vec3& x = set.points[i];
-            Rgb h = luminaire_irradiance_at(scene, visibility, x, set.normal, local);
+            Rgb h = criteria.with_luminaires
+                        ? luminaire_irradiance_at(scene, visibility, x, set.normal, local)
+                        : Rgb{0, 0, 0};
             if (tree.top() >= 0) {
                 const Rgb g =
                     gather.at(x, set.normal, (s << 40) ^ i, photometric(h, channels), local);

@@ -24,6 +24,7 @@ struct GatherCriteria {
     int max_rays_per_point = 256;
     double noise_share = 0;
     bool unoccluded = false;  ///< nothing can block (see nothing_can_occlude): no shadow rays
+    bool with_luminaires = true;  ///< false: the tree's light only
 };
 
 /// Illuminance (lux; luminance of the RGB irradiance for colour scenes) at every sensor point.

@@ -49,26 +49,28 @@ double sensor_dark_scale(const Result& r) {
     return count > 0 ? kDarkShare * sum / static_cast<double>(count) : 0;
 }
 
-bool sensors_correspond(const Result& a, const Result& b) {
-    if (a.sensors.empty() || a.sensors.size() != b.sensors.size()) return false;
+bool sensors_correspond(const Result& a, const std::vector<SensorResult>& b) {
+    if (a.sensors.empty() || a.sensors.size() != b.size()) return false;
     for (std::size_t k = 0; k < a.sensors.size(); ++k) {
-        if (a.sensors[k].illuminance.size() != b.sensors[k].illuminance.size()) return false;
+        if (a.sensors[k].illuminance.size() != b[k].illuminance.size()) return false;
     }
     return true;
 }
 
-// Sensor sets: each set's RMS difference over its mean, the largest.
-double sensor_rms_difference(const Result& a, const Result& b) {
+// Sensor sets: each set's RMS of `difference(set, point)` over the set's mean in `a`, the
+// largest.
+template <class Difference>
+double worst_set_rms(const Result& a, const Difference& difference) {
     const double dark = sensor_dark_scale(a);
     double worst = 0;
     for (std::size_t k = 0; k < a.sensors.size(); ++k) {
         const std::vector<double>& x = a.sensors[k].illuminance;
-        const std::vector<double>& y = b.sensors[k].illuminance;
         if (x.empty()) continue;
         double mean = 0, squares = 0;
         for (std::size_t i = 0; i < x.size(); ++i) {
             mean += x[i];
-            squares += (x[i] - y[i]) * (x[i] - y[i]);
+            const double d = difference(k, i);
+            squares += d * d;
         }
         const double n = static_cast<double>(x.size());
         const double scale = std::max(mean / n, dark);
@@ -96,8 +98,18 @@ double surface_rms_difference(const Result& a, const Result& b) {
     return count > 0 ? std::sqrt(squares / static_cast<double>(count)) : 0.0;
 }
 
+double sensor_rms_of(const Result& a, const std::vector<SensorResult>& differences) {
+    if (!sensors_correspond(a, differences)) return 0;
+    return worst_set_rms(a, [&](std::size_t k, std::size_t i) {
+        return differences[k].illuminance[i];
+    });
+}
+
 double relative_rms_difference(const Result& a, const Result& b) {
-    return sensors_correspond(a, b) ? sensor_rms_difference(a, b) : surface_rms_difference(a, b);
+    if (!sensors_correspond(a, b.sensors)) return surface_rms_difference(a, b);
+    return worst_set_rms(a, [&](std::size_t k, std::size_t i) {
+        return a.sensors[k].illuminance[i] - b.sensors[k].illuminance[i];
+    });
 }
 
 }  // namespace radiant

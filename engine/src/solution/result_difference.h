@@ -19,4 +19,9 @@ double relative_rms_difference(const Result& a, const Result& b);
 /// The surfaces' part of relative_rms_difference, whether or not there are sensors.
 double surface_rms_difference(const Result& a, const Result& b);
 
+/// relative_rms_difference's sensor measure of differences given directly: each set's RMS of
+/// `differences` (lux, in a's sets and points) over the set's mean in `a`, the largest; 0 when
+/// the sets differ in shape.
+double sensor_rms_of(const Result& a, const std::vector<SensorResult>& differences);
+
 }  // namespace radiant

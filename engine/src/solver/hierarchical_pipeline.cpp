@@ -212,8 +212,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
 
     HierarchicalSystem system(tree, linked.links, enclosed, front_share, channels);
     // Sensors gather down the tree from the current radiosity, opening nodes that could add more
-    // than a share of the tolerance × the mean irradiance (`coarsening` times that for previews).
-    auto gather_sensors = [&](double coarsening) {
+    // than a share of the tolerance × the mean irradiance (`coarsening` times that for previews),
+    // with the luminaires' light or (`with_luminaires` false) without.
+    auto gather_sensors = [&](double coarsening, bool with_luminaires = true) {
         double mean_irradiance = 0;
         for (std::size_t e = 0; e < tree.size(); ++e) {
             const Element& x = tree[e];
@@ -228,6 +229,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         gather.noise_share = coarsening * kSensorNoiseShare * options_.tolerance;
         gather.seed = options_.seed;
         gather.unoccluded = unoccluded;
+        gather.with_luminaires = with_luminaires;
         return gather_sensors_from_tree(scene, tree, visibility, gather, channels, rays_);
     };
     report("solving", 0.6);
@@ -282,14 +284,24 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     report("sensors", 0.9, outcome.iterations);
     result.sensors = gather_sensors(1);
     // The other answer is compared where the error is stated, at the sensors (gathered alike),
-    // and on the surfaces, where the completion's bias shows first (see below).
+    // or on the surfaces where there are none. What the sensors gather from the two answers'
+    // difference on every leaf, taken with one sign, is how far apart they could be were every
+    // leaf's answer off the same way (see below).
     std::optional<Result> patchwise;
+    std::vector<SensorResult> one_signed;
     if (other) {
         patchwise.emplace();
         patchwise->surfaces = summarise_surfaces(scene, solved_leaves(*other), channels).surfaces;
         if (!result.sensors.empty()) {
             system.show_radiosity(*other);
             patchwise->sensors = gather_sensors(1);
+            HierarchicalSystem::LeafLight gap = light;
+            for (std::size_t e = 0; e < tree.size(); ++e) {
+                for (std::size_t c = 0; c < 3; ++c)
+                    gap.radiosity[e][c] = std::abs(light.radiosity[e][c] - other->radiosity[e][c]);
+            }
+            system.show_radiosity(gap);
+            one_signed = gather_sensors(1, false);
             system.show_radiosity(light);
         }
     }
@@ -323,14 +335,15 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     // Errors of the links that the mesh check cannot see; not of the iteration, so they do not
     // stop the result here: a finer solve can be asked for (refine_to_tolerance), and only a
     // result that still misses the tolerance after it is `stopped` (Pipeline::run).
-    // The completion's difference counts on the surfaces even where there are sensors: a bias
-    // both completions share shows there first (office-x1 at 0.01: sensors 0.10 % off Monte
-    // Carlo at 0.001, where their difference gave an estimate of 0.040 %;
-    // tests/bench/results/hierarchical-estimate.md).
+    // At sensors the two answers' own difference can cancel what both share (office-x1 at 0.01:
+    // 0.013 %, for an error of 0.06 %), so the estimate also takes their difference with one
+    // sign on every leaf (0.065 % there), which is a worst case over the leaves' signs already.
+    // The surfaces' RMS difference that stood for it was up to 6 times the error (two rooms at
+    // 0.03: 0.66 % for 0.136 %; tests/bench/results/hierarchical-estimate.md).
     if (patchwise) {
-        const double difference = std::max(relative_rms_difference(result, *patchwise),
-                                           surface_rms_difference(result, *patchwise));
-        error_estimate = std::max(error_estimate, kCompletionMargin * difference);
+        const double difference = relative_rms_difference(result, *patchwise);
+        error_estimate = std::max({error_estimate, kCompletionMargin * difference,
+                                   sensor_rms_of(result, one_signed)});
     }
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
