@@ -23,7 +23,7 @@ struct GatherCriteria {
     /// standard deviation is at most noise_share × the point's illuminance (0: never).
     int max_rays_per_point = 256;
     double noise_share = 0;
-    bool unoccluded = false;  ///< nothing can block (see nothing_can_occlude): no shadow rays
+    bool unoccluded = false;      ///< nothing can block (see nothing_can_occlude): no shadow rays
     bool with_luminaires = true;  ///< false: the tree's light only
 };
 

@@ -100,9 +100,8 @@ double surface_rms_difference(const Result& a, const Result& b) {
 
 double sensor_rms_of(const Result& a, const std::vector<SensorResult>& differences) {
     if (!sensors_correspond(a, differences)) return 0;
-    return worst_set_rms(a, [&](std::size_t k, std::size_t i) {
-        return differences[k].illuminance[i];
-    });
+    return worst_set_rms(
+        a, [&](std::size_t k, std::size_t i) { return differences[k].illuminance[i]; });
 }
 
 double relative_rms_difference(const Result& a, const Result& b) {

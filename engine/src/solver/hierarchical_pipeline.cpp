@@ -342,8 +342,8 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     // 0.03: 0.66 % for 0.136 %; tests/bench/results/hierarchical-estimate.md).
     if (patchwise) {
         const double difference = relative_rms_difference(result, *patchwise);
-        error_estimate = std::max({error_estimate, kCompletionMargin * difference,
-                                   sensor_rms_of(result, one_signed)});
+        error_estimate = std::max(
+            {error_estimate, kCompletionMargin * difference, sensor_rms_of(result, one_signed)});
     }
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
