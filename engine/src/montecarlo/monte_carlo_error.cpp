@@ -29,8 +29,11 @@ constexpr double kMinGrowth = 1.5;
 // deviations: a set of one point reads a single noisy difference, whose square exceeds its
 // variance one time in three, and a scene has many such sets and rounds (the example office's
 // desk points made its mesh 3.6 times finer at tolerance 0.01 for no better answer; at two
-// deviations, still 4 times at 0.003).
-constexpr double kDepthSignificance = 3;
+// deviations, still 4 times at 0.003). The coarser level's difference always counts, but calls
+// for a finer mesh only when it stands out so: office-x4 at 0.0007 read 0.098 % of it in the
+// first round of each level, from photon noise of 1 % per point, and refined three times to
+// `stopped` in 4 s, where more samples show 0.013 %.
+constexpr double kBiasSignificance = 3;
 // Bias may take this much of the target² before the noise budget is held to what it leaves.
 constexpr double kMinNoiseShare = 0.1;
 
@@ -42,7 +45,7 @@ std::vector<SetError> set_errors(const std::vector<GatheredPoint>& points,
     std::size_t first = 0;
     for (const std::size_t size : set_sizes) {
         SetError& set = out.emplace_back();
-        double mean = 0, gather = 0, photon = 0, bias = 0;
+        double mean = 0, gather = 0, photon = 0, bias = 0, bias_noise = 0;
         double depth = 0, depth_noise = 0;  // Σ (d² − var) and Σ var², over the set
         std::array<double, PhotonField::kBatches> shared{};  // the set's mean, batch by batch
         for (std::size_t i = first; i < first + size; ++i) {
@@ -50,6 +53,8 @@ std::vector<SetError> set_errors(const std::vector<GatheredPoint>& points,
             gather += points[i].gather_variance;
             photon += points[i].photon_variance;
             bias += points[i].coarse_difference_squared - points[i].coarse_difference_variance;
+            bias_noise +=
+                points[i].coarse_difference_variance * points[i].coarse_difference_variance;
             const double var = points[i].depth_difference_variance;
             depth += points[i].depth_difference_squared - var;
             depth_noise += var * var;
@@ -59,7 +64,10 @@ std::vector<SetError> set_errors(const std::vector<GatheredPoint>& points,
         }
         first += size;
         // (d² − var has a standard deviation of √2·var for a normal d.)
-        if (depth > kDepthSignificance * std::sqrt(2 * depth_noise)) bias += depth;
+        const bool deep = depth > kBiasSignificance * std::sqrt(2 * depth_noise);
+        if (deep) bias += depth;
+        set.error.discretisation_significant =
+            deep || bias > kBiasSignificance * std::sqrt(2 * bias_noise);
         if (size == 0 || !(mean > 0)) continue;
         const double n = static_cast<double>(size);
         mean /= n;

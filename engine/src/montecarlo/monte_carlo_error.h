@@ -13,6 +13,9 @@ namespace radiant {
 struct MonteCarloError {
     double total = 0;  ///< the estimate: RMS over a set's points relative to its mean, worst set
     ErrorParts parts;  ///< of the worst set
+    /// Whether the discretisation part stands out of its own noise (see set_errors): only then
+    /// does a finer mesh promise less of it, rather than more samples.
+    bool discretisation_significant = false;
 };
 
 /// The estimate of every sensor set (relative to its mean; 0 for a set without light), and

@@ -515,12 +515,16 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 stopped = true;
                 break;
             }
-            // Bias does not fall with samples: a finer mesh does.
+            // Bias does not fall with samples: a finer mesh does, once it stands out of the
+            // noise (see MonteCarloError::discretisation_significant).
             const double bias_target = kTargetShare * options_.tolerance;
+            const auto biased_by = [&](const MonteCarloError& e) {
+                return !(e.parts.discretisation < bias_target) && e.discretisation_significant;
+            };
             const bool biased =
                 std::any_of(level->lights.begin(), level->lights.end(), [&](const auto& light) {
-                    return !done(*light) && !(light->error.parts.discretisation < bias_target &&
-                                              light->eye_error.parts.discretisation < bias_target);
+                    return !done(*light) &&
+                           (biased_by(light->error) || biased_by(light->eye_error));
                 });
             if (biased) {
                 refine = refinements < kMaxRefinements;
