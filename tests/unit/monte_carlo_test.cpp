@@ -347,5 +347,28 @@ TEST(MonteCarloError, PhotonNoiseTheSetSharesGetsTheLargerMargin) {
     EXPECT_NEAR(together, 2 * sigma, 1e-12);
 }
 
+// The coarser level's difference counts in the estimate either way, but calls for a finer mesh
+// only when it stands out of its noise: 50 points whose squared differences exceed their
+// variance by 1 lx², a sum of 50 lx², with a variance of 2 lx² each (noise alone spreads that sum
+// by 20 lx², so 50 is within three deviations) or of 0.01 lx² (by 0.1 lx²).
+TEST(MonteCarloError, ABiasCallsForAFinerMeshOnlyAboveItsNoise) {
+    constexpr int kPoints = 50;
+    auto set_with_variance = [](double variance) {
+        std::vector<GatheredPoint> points(kPoints);
+        for (GatheredPoint& p : points) {
+            p.illuminance = 100;
+            p.coarse_difference_variance = variance;
+            p.coarse_difference_squared = variance + 1;
+        }
+        return worst_error(set_errors(points, {kPoints}));
+    };
+    const MonteCarloError noisy = set_with_variance(2);
+    const MonteCarloError clear = set_with_variance(0.01);
+    EXPECT_NEAR(noisy.parts.discretisation, 0.01, 1e-12);
+    EXPECT_NEAR(clear.parts.discretisation, 0.01, 1e-12);
+    EXPECT_FALSE(noisy.discretisation_significant);
+    EXPECT_TRUE(clear.discretisation_significant);
+}
+
 }  // namespace
 }  // namespace radiant
