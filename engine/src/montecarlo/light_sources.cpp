@@ -39,6 +39,12 @@ constexpr int kCCells = 72;
 // piece_part) before one is taken anyway: a draw is a few multiplications and no ray.
 constexpr int kMaxKernelDraws = 64;
 
+// A uniformly drawn point of triangle `t`.
+Vec3 uniform_point(const std::array<Vec3, 3>& t, SampleStream& rng) {
+    const double s1 = std::sqrt(rng.next()), r = rng.next();
+    return t[0] * (1 - s1) + t[1] * (s1 * (1 - r)) + t[2] * (s1 * r);
+}
+
 // A point of triangle `t` (plane normal `normal`, facing x) drawn with density ∝ the point
 // kernel cosθ cosθ' / r² toward x (normal n), by rejection from uniform points: the kernel is
 // (n·d) h / r⁴ with h the plane's distance from x, and (n·d) is largest at a vertex and r
@@ -56,8 +62,7 @@ Vec3 kernel_point(const Vec3& x, const Vec3& n, const std::array<Vec3, 3>& t, co
     const double bound = most_ahead / (r_min * r_min * r_min * r_min);
     Vec3 y;
     for (int draw = 0; draw < kMaxKernelDraws; ++draw) {
-        const double s1 = std::sqrt(rng.next()), r = rng.next();
-        y = t[0] * (1 - s1) + t[1] * (s1 * (1 - r)) + t[2] * (s1 * r);
+        y = uniform_point(t, rng);
         const double r2 = length_squared(y - x);
         if (rng.next() * bound * r2 * r2 <= std::max(0.0, dot(n, y - x))) break;
     }
@@ -294,12 +299,9 @@ Rgb LightSources::piece_part(const EmittingPiece& e, const Vec3& x, const Vec3& 
             self(self, ab, bc, ca, depth + 1);
             return;
         }
-        if (edge2 <= kPartSize * kPartSize * length_squared(centre - x)) {
-            sum += part_factor * seen_at(kernel_point(x, n, t, p.normal, rng));
-            return;
-        }
-        const double s1 = std::sqrt(rng.next()), r = rng.next();
-        sum += part_factor * seen_at(a * (1 - s1) + b * (s1 * (1 - r)) + c * (s1 * r));
+        const bool small = edge2 <= kPartSize * kPartSize * length_squared(centre - x);
+        sum += part_factor *
+               seen_at(small ? kernel_point(x, n, t, p.normal, rng) : uniform_point(t, rng));
     };
     const std::vector<Vec3>& v = p.vertices;
     for (std::size_t k = 1; k + 1 < v.size(); ++k) add_part(add_part, v[0], v[k], v[k + 1], 0);
