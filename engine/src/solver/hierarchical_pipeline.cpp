@@ -291,14 +291,18 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     std::vector<SensorResult> one_signed;
     if (other) {
         patchwise.emplace();
-        patchwise->surfaces = summarise_surfaces(scene, solved_leaves(*other), channels).surfaces;
-        if (!result.sensors.empty()) {
+        if (result.sensors.empty()) {
+            patchwise->surfaces =
+                summarise_surfaces(scene, solved_leaves(*other), channels).surfaces;
+        } else {
             system.show_radiosity(*other);
             patchwise->sensors = gather_sensors(1);
-            HierarchicalSystem::LeafLight gap = light;
+            // show_radiosity reads the radiosity only.
+            HierarchicalSystem::LeafLight gap;
+            gap.radiosity = other->radiosity;
             for (std::size_t e = 0; e < tree.size(); ++e) {
                 for (std::size_t c = 0; c < 3; ++c)
-                    gap.radiosity[e][c] = std::abs(light.radiosity[e][c] - other->radiosity[e][c]);
+                    gap.radiosity[e][c] = std::abs(light.radiosity[e][c] - gap.radiosity[e][c]);
             }
             system.show_radiosity(gap);
             one_signed = gather_sensors(1, false);
