@@ -215,6 +215,7 @@ bool prepare_reference(BenchScene& bench, const std::string& method, double tole
     source << method << " " << tolerance;
     bench.reference.source = source.str();
     bench.reference.illuminance = std::move(cached->illuminance);
+    bench.reference.error_estimate = cached->error_estimate;
     std::cerr << "radiant-bench: reference of " << bench.scene.name << ": "
               << bench.reference.source << ", " << cached->seconds << " s, error estimate "
               << cached->error_estimate << '\n';
@@ -564,6 +565,7 @@ int main(int argc, char** argv) {
                 row.method = method;
                 row.tolerance = tol;
                 row.peak_mib = outcome.peak_mib;
+                row.reference_error = bench.reference.error_estimate;
                 if (outcome.value) {
                     const auto& v = *outcome.value;
                     row.status = v.at("status");

@@ -22,6 +22,9 @@ struct ReferenceAnswer {
     nlohmann::json checks;            ///< expected.json checks; null when comparing sensors
     std::string sensor;               ///< the sensor set compared point by point
     std::vector<double> illuminance;  ///< new lamps (no maintenance factor)
+    /// The reference solve's own error estimate (0: exact answers, and RADIANCE's, whose error
+    /// the benchmark does not know); a row's measured error is the true one only within it.
+    double error_estimate = 0;
 };
 
 struct RelativeError {
