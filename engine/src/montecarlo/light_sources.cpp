@@ -45,13 +45,12 @@ Vec3 uniform_point(const std::array<Vec3, 3>& t, SampleStream& rng) {
     return t[0] * (1 - s1) + t[1] * (s1 * (1 - r)) + t[2] * (s1 * r);
 }
 
-// A point of triangle `t` (plane normal `normal`, facing x) drawn with density ∝ the point
-// kernel cosθ cosθ' / r² toward x (normal n), by rejection from uniform points: the kernel is
-// (n·d) h / r⁴ with h the plane's distance from x, and (n·d) is largest at a vertex and r
-// smallest at least the centre's distance less the vertices' spread about it.
-Vec3 kernel_point(const Vec3& x, const Vec3& n, const std::array<Vec3, 3>& t, const Vec3& normal,
-                  SampleStream& rng) {
-    const Vec3 centre = (t[0] + t[1] + t[2]) * (1.0 / 3);
+// A point of triangle `t` (centroid `centre`, plane normal `normal`, facing x) drawn with
+// density ∝ the point kernel cosθ cosθ' / r² toward x (normal n), by rejection from uniform
+// points: the kernel is (n·d) h / r⁴ with h the plane's distance from x, and (n·d) is largest at
+// a vertex and r smallest at least the centre's distance less the vertices' spread about it.
+Vec3 kernel_point(const Vec3& x, const Vec3& n, const std::array<Vec3, 3>& t, const Vec3& centre,
+                  const Vec3& normal, SampleStream& rng) {
     double spread = 0, most_ahead = 0;
     for (const Vec3& v : t) {
         spread = std::max(spread, length(v - centre));
@@ -300,8 +299,8 @@ Rgb LightSources::piece_part(const EmittingPiece& e, const Vec3& x, const Vec3& 
             return;
         }
         const bool small = edge2 <= kPartSize * kPartSize * length_squared(centre - x);
-        sum += part_factor *
-               seen_at(small ? kernel_point(x, n, t, p.normal, rng) : uniform_point(t, rng));
+        sum += part_factor * seen_at(small ? kernel_point(x, n, t, centre, p.normal, rng)
+                                           : uniform_point(t, rng));
     };
     const std::vector<Vec3>& v = p.vertices;
     for (std::size_t k = 1; k + 1 < v.size(); ++k) add_part(add_part, v[0], v[k], v[k + 1], 0);
