@@ -81,6 +81,40 @@ TEST(ElementMesh, CutsPiecesToTheEdgeAndKeepsTheirArea) {
         EXPECT_NEAR(area[p], scene.pieces[p].area_m2, 1e-9 * scene.pieces[p].area_m2);
 }
 
+// A rack's beam (24.3 m by 12 cm) and a long thin triangle are cut into a strip of cells whose
+// two triangles are each other's coarser half, four elements per edge length along them (cells
+// half an edge long), not the 1 458 that bisecting the beam's triangles made; count() says what
+// the mesh holds.
+TEST(ElementMesh, CutsLongStripsIntoAsFewElementsAsTheirLength) {
+    Scene scene;
+    scene.materials = {testing::gray("steel", 0.5)};
+    scene.surfaces.push_back(testing::polygon_surface(
+        "beam", "steel", testing::rect({0, 0, 1}, {24.3, 0, 0}, {0, 0.12, 0})));
+    scene.surfaces.push_back(
+        testing::polygon_surface("blade", "steel", {{0, 2, 1}, {12, 2.05, 1}, {0, 2.1, 1}}));
+    const PreparedScene prepared = prepare_scene(scene);
+    const double edge = 0.71;
+    const ElementMesh mesh(prepared, edge);
+    std::map<int, std::size_t> per_piece;
+    std::size_t paired = 0;
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+        ++per_piece[mesh[i].piece];
+        if (mesh[i].sibling >= 0) ++paired;
+        for (const auto& [p, q] : {std::pair{mesh[i].triangle.a, mesh[i].triangle.b},
+                                   {mesh[i].triangle.b, mesh[i].triangle.c},
+                                   {mesh[i].triangle.c, mesh[i].triangle.a}}) {
+            EXPECT_LE(length(q - p), edge * (1 + 1e-12));
+        }
+    }
+    ASSERT_EQ(per_piece.size(), 2u);
+    EXPECT_LE(per_piece[0], 2 * static_cast<std::size_t>(std::ceil(2 * 24.3 / edge)) + 2);
+    EXPECT_LE(per_piece[1], 2 * static_cast<std::size_t>(std::ceil(2 * 12 / edge)) + 2);
+    EXPECT_GE(paired, mesh.size() * 9 / 10);  // the strip's cells, all but a few at the tips
+    const ElementCount counted = ElementMesh::count(prepared, edge);
+    EXPECT_EQ(counted.elements, mesh.size());
+    EXPECT_EQ(counted.sides, mesh.sides().size());
+}
+
 // A panel hung 1 cm under the ceiling hides the ceiling behind it: light reaches none of it, so
 // the photons' flux must be spread over the rest of those elements (the classroom's work plane
 // read 0.09 % dark without). What lies farther away hides nothing: the floor under a desk, or

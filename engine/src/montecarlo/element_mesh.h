@@ -1,7 +1,7 @@
 // The Monte Carlo path's elements: every piece of the prepared scene cut into triangles no
-// longer than a target edge, by bisecting longest edges (thin boards stay strips, never
-// slivers). Rays find an element by its triangle index, so looking up what a ray lands on costs
-// nothing beyond the ray itself.
+// longer than a target edge: a narrow piece (a board's edge, a rack's beam) as a strip of cells
+// along it, two triangles each, any other by bisecting longest edges. Rays find an element by
+// its triangle index, so looking up what a ray lands on costs nothing beyond the ray itself.
 #pragma once
 
 #include <cstdint>
@@ -19,8 +19,9 @@ struct MeshElement {
     int piece = 0;
     int surface = 0;
     int material = 0;
-    /// The other half of the bisection that made this element, when that half was not split
-    /// further, else −1: the two make the coarser level the discretisation estimate reads.
+    /// The other half of the bisection or strip cell that made this element, when that half was
+    /// not split further, else −1: the two make the coarser level the discretisation estimate
+    /// reads.
     int sibling = -1;
     int front = -1;  ///< index of its front side among the sides
     int back = -1;   ///< of its back side; −1 when the back is black (one-sided material)
