@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "geometry/polygon_split.h"
 #include "parallel/fork_join.h"
@@ -59,54 +60,68 @@ struct Elements {
     }
 };
 
-// A convex piece narrower than h/√2 across its longest edge, cut into a strip of cells along
-// that edge, h/2 long (about as long as bisecting its triangles makes them): the cell's two
-// triangles fit and are each other's coarser half. Empty for a wider piece. Bisecting a strip's
-// triangles instead triples their number per halving of their length (a rack's beam, 24 m by
-// 12 cm: 1 458 elements a face at h = 0.71 m, where its strip has 138).
-std::vector<std::vector<Vec3>> strip_cells(const Piece& piece, double h) {
+// How a narrow piece is cut into a strip of cells along its longest edge (see strip_of).
+struct Strip {
+    Vec3 along;        ///< unit, the longest edge's direction
+    double start = 0;  ///< the piece's least extent along it
+    double step = 0;   ///< the cells' length
+    std::size_t cells = 0;
+    double eps = 0;  ///< what counts as on a cut
+};
+
+// The strip of a convex piece narrower than h/√2 across its longest edge: cells h/2 long along
+// that edge (about as long as bisecting its triangles makes them), whose two triangles fit and
+// are each other's coarser half; none for a wider piece. Bisecting a strip's triangles instead
+// triples their number per halving of their length (a rack's beam, 24 m by 12 cm: 1 458 elements
+// a face at h = 0.71 m, where its strip has 138).
+std::optional<Strip> strip_of(const Piece& piece, double h) {
     const std::vector<Vec3>& v = piece.vertices;
-    Vec3 along{1, 0, 0};
+    Strip strip;
     double longest = 0;
     for (std::size_t k = 0; k < v.size(); ++k) {
         const Vec3 edge = v[(k + 1) % v.size()] - v[k];
         if (length(edge) > longest) {
             longest = length(edge);
-            along = edge / longest;
+            strip.along = edge / longest;
         }
     }
-    const Vec3 across = cross(piece.normal, along);
-    double u0 = dot(v[0], along), u1 = u0, v0 = dot(v[0], across), v1 = v0;
+    const Vec3 across = cross(piece.normal, strip.along);
+    double u0 = dot(v[0], strip.along), u1 = u0, v0 = dot(v[0], across), v1 = v0;
     for (const Vec3& p : v) {
-        u0 = std::min(u0, dot(p, along));
-        u1 = std::max(u1, dot(p, along));
+        u0 = std::min(u0, dot(p, strip.along));
+        u1 = std::max(u1, dot(p, strip.along));
         v0 = std::min(v0, dot(p, across));
         v1 = std::max(v1, dot(p, across));
     }
     // A little under h, so that rounding never leaves a diagonal just over it.
     const double fit = h * (1 - 1e-6);
-    const double width = v1 - v0;
-    if (width > fit / std::sqrt(2.0)) return {};
-    const auto cells = static_cast<std::size_t>(std::max(1.0, std::ceil((u1 - u0) / (fit / 2))));
-    const double step = (u1 - u0) / static_cast<double>(cells);
-    const double eps = 1e-9 * longest;
-    std::vector<std::vector<Vec3>> out;
+    if (!(longest > 0) || v1 - v0 > fit / std::sqrt(2.0)) return std::nullopt;
+    strip.start = u0;
+    strip.cells = static_cast<std::size_t>(std::max(1.0, std::ceil((u1 - u0) / (fit / 2))));
+    strip.step = (u1 - u0) / static_cast<double>(strip.cells);
+    strip.eps = 1e-9 * longest;
+    return strip;
+}
+
+// Calls `visit` with each cell of the strip over convex polygon `v`, in order along it, one at a
+// time (a count holds no more than one).
+template <class Visit>
+void for_each_cell(const std::vector<Vec3>& v, const Strip& strip, const Visit& visit) {
     std::vector<Vec3> rest = v;
-    for (std::size_t k = 1; k <= cells && !rest.empty(); ++k) {
+    for (std::size_t k = 1; k <= strip.cells && !rest.empty(); ++k) {
         std::vector<Vec3> cell;
-        if (k < cells) {
-            auto [beyond, before] =
-                split_by_plane(rest, along * (u0 + step * static_cast<double>(k)), along, eps);
+        if (k < strip.cells) {
+            const Vec3 cut = strip.along * (strip.start + strip.step * static_cast<double>(k));
+            auto [beyond, before] = split_by_plane(rest, cut, strip.along, strip.eps);
             cell = std::move(before);
             rest = std::move(beyond);
         } else {
             cell = std::move(rest);
             rest.clear();
         }
-        cell = simplify_polygon(cell, eps);
-        if (cell.size() >= 3) out.push_back(std::move(cell));
+        cell = simplify_polygon(cell, strip.eps);
+        if (cell.size() >= 3) visit(cell);
     }
-    return out;
 }
 
 // How many elements bisecting `t` to fit within h makes, counted up to just past `limit`.
@@ -134,24 +149,24 @@ void split_piece(const Piece& piece, int index, double h, Elements& elements) {
     bool fits = true;
     for (std::size_t k = 0; k < v.size() && fits; ++k)
         fits = length(v[(k + 1) % v.size()] - v[k]) <= h;
-    const std::vector<std::vector<Vec3>> cells =
-        fits ? std::vector<std::vector<Vec3>>{} : strip_cells(piece, h);
-    const std::size_t limit = kStripGain * 2 * cells.size();
+    const std::optional<Strip> strip = fits ? std::nullopt : strip_of(piece, h);
+    // A strip's cells are quadrilaterals but for its ends: about two elements each.
+    const std::size_t limit = strip ? kStripGain * 2 * strip->cells : 0;
     std::size_t bisected = 0;
-    for (std::size_t k = 1; k + 1 < v.size() && !cells.empty() && bisected <= limit; ++k)
+    for (std::size_t k = 1; k + 1 < v.size() && strip && bisected <= limit; ++k)
         bisected += bisection_count({v[0], v[k], v[k + 1]}, h, limit - bisected);
-    if (cells.empty() || bisected <= limit) {
+    if (!strip || bisected <= limit) {
         // Convex pieces: a fan from the first vertex.
         for (std::size_t k = 1; k + 1 < v.size(); ++k)
             elements.bisect({v[0], v[k], v[k + 1]}, proto, h);
         return;
     }
-    for (const std::vector<Vec3>& cell : cells) {
+    for_each_cell(v, *strip, [&](const std::vector<Vec3>& cell) {
         std::vector<int> made;
         for (std::size_t k = 1; k + 1 < cell.size(); ++k)
             made.push_back(elements.bisect({cell[0], cell[k], cell[k + 1]}, proto, h));
         if (made.size() == 2) elements.pair(made[0], made[1]);
-    }
+    });
 }
 
 }  // namespace
