@@ -96,9 +96,11 @@ TEST(ElementMesh, CutsLongStripsIntoAsFewElementsAsTheirLength) {
     const double edge = 0.71;
     const ElementMesh mesh(prepared, edge);
     std::map<int, std::size_t> per_piece;
+    std::map<int, double> area;
     std::size_t paired = 0;
     for (std::size_t i = 0; i < mesh.size(); ++i) {
         ++per_piece[mesh[i].piece];
+        area[mesh[i].piece] += mesh[i].area_m2;
         if (mesh[i].sibling >= 0) ++paired;
         for (const auto& [p, q] : {std::pair{mesh[i].triangle.a, mesh[i].triangle.b},
                                    {mesh[i].triangle.b, mesh[i].triangle.c},
@@ -107,6 +109,10 @@ TEST(ElementMesh, CutsLongStripsIntoAsFewElementsAsTheirLength) {
         }
     }
     ASSERT_EQ(per_piece.size(), 2u);
+    for (const auto& [piece, sum] : area) {
+        const double whole = prepared.pieces[static_cast<std::size_t>(piece)].area_m2;
+        EXPECT_NEAR(sum, whole, 1e-9 * whole) << "piece " << piece;
+    }
     EXPECT_LE(per_piece[0], 2 * static_cast<std::size_t>(std::ceil(2 * 24.3 / edge)) + 2);
     EXPECT_LE(per_piece[1], 2 * static_cast<std::size_t>(std::ceil(2 * 12 / edge)) + 2);
     EXPECT_GE(paired, mesh.size() * 9 / 10);  // the strip's cells, all but a few at the tips
