@@ -448,6 +448,27 @@ TEST(AutoMethod, DenseForAFewWallsHierarchicalWhenTheirMeshIsFine) {
     EXPECT_EQ(slab.stats.method, "hierarchical");
 }
 
+// Without sensors `auto` leaves a furnished room (more than 100 convex polygons) to Monte Carlo,
+// which measures the noise of the surfaces' means; a room with less in it to the hierarchy.
+TEST(AutoMethod, WithoutSensorsMonteCarloBeyondAHundredPolygons) {
+    Scene scene = testing::room_with_ceiling_panel(0.5, 1000);
+    constexpr int kBoxes = 16;  // six polygons each
+    for (int k = 0; k < kBoxes; ++k) {
+        const Vec3 corner{0.2 + 0.28 * (k % 13), 0.2 + 0.28 * (k / 13), 0};
+        scene.surfaces.push_back(testing::box_surface("box-" + std::to_string(k), "wall", corner,
+                                                      corner + Vec3{0.1, 0.1, 0.1}, false));
+    }
+    SolveOptions options;
+    options.tolerance = 0.1;
+    const Result furnished = solve(scene, options);
+    ASSERT_EQ(furnished.status, SolveStatus::converged) << furnished.error;
+    EXPECT_EQ(furnished.stats.method, "monte-carlo");
+    scene.surfaces.resize(scene.surfaces.size() - kBoxes / 2);  // 48 + the room's 9
+    const Result sparse = solve(scene, options);
+    ASSERT_NE(sparse.status, SolveStatus::failed) << sparse.error;
+    EXPECT_EQ(sparse.stats.method, "hierarchical");
+}
+
 TEST(Cancellation, CancelFromFirstProgress) {
     const Scene scene = testing::load_scene(testing::data_path("radiance/room-s2.json"));
     CancellationToken token;

@@ -5,6 +5,7 @@
 #include "geometry/cosine_direction.h"
 #include "montecarlo/channel_product.h"
 #include "parallel/fork_join.h"
+#include "solution/result_difference.h"
 #include "solution/surface_summary.h"
 
 namespace radiant {
@@ -34,6 +35,29 @@ PhotonField::PhotonField(const PreparedScene& scene, const ElementMesh& mesh, st
         const double area = mesh.sides()[s].open_area_m2;
         inverse_area_[s] = area > 0 ? 1 / area : 0.0;
     }
+    const std::vector<bool> counted = radiant::counted_surfaces(scene.surface_area_m2);
+    counted_slot_.assign(counted.size(), -1);
+    for (std::size_t i = 0; i < counted.size(); ++i) {
+        total_area_m2_ += scene.surface_area_m2[i];
+        if (!counted[i]) continue;
+        counted_slot_[i] = static_cast<int>(counted_.size());
+        counted_.push_back(static_cast<int>(i));
+    }
+    surface_batch_.assign(counted_.size() * kBatches * 2, 0.0);
+}
+
+double PhotonField::batch_surface_mean(std::size_t k, int b, int what) const {
+    const double area = scene_.surface_area_m2[static_cast<std::size_t>(counted_[k])];
+    if (!chunks_ || !(area > 0)) return 0;
+    const std::size_t at = (k * kBatches + static_cast<std::size_t>(b)) * 2;
+    return surface_batch_[at + static_cast<std::size_t>(what)] * kBatches /
+           (static_cast<double>(photons()) * area);
+}
+
+double PhotonField::mean_front(int what) const {
+    if (!chunks_ || !(total_area_m2_ > 0)) return 0;
+    return front_[static_cast<std::size_t>(what)] /
+           (static_cast<double>(photons()) * total_area_m2_);
 }
 
 Rgb PhotonField::per_area(const std::vector<Rgb>& tally, int side) const {
@@ -50,7 +74,9 @@ std::size_t PhotonField::wave_bytes(double mean_reflectance) {
 
 std::size_t PhotonField::memory_bytes() const {
     return (total_.capacity() + indirect_.capacity()) * sizeof(Rgb) +
-           batch_.capacity() * sizeof(float) + inverse_area_.capacity() * sizeof(double);
+           batch_.capacity() * sizeof(float) +
+           (inverse_area_.capacity() + surface_batch_.capacity()) * sizeof(double) +
+           (counted_.capacity() + counted_slot_.capacity()) * sizeof(int);
 }
 
 void PhotonField::trace_chunk(std::size_t chunk, const LightSources& sources,
@@ -82,6 +108,28 @@ void PhotonField::trace_chunk(std::size_t chunk, const LightSources& sources,
     }
 }
 
+void PhotonField::add_deposit(const Deposit& d, std::size_t batch) {
+    const auto s = static_cast<std::size_t>(d.side);
+    const ElementSide& side = mesh_.sides()[s];
+    const MeshElement& e = mesh_[static_cast<std::size_t>(side.element)];
+    const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
+    const double reflected = photometric(times(rho, d.flux), scene_.channels);
+    for (int c = 0; c < 3; ++c) total_[s][c] += d.flux[c];
+    if (!side.back) {
+        const double irradiance = photometric(d.flux, scene_.channels);
+        front_[0] += irradiance;
+        front_[1] += reflected;
+        if (const int k = counted_slot_[static_cast<std::size_t>(e.surface)]; k >= 0) {
+            const std::size_t at = (static_cast<std::size_t>(k) * kBatches + batch) * 2;
+            surface_batch_[at] += irradiance;
+            surface_batch_[at + 1] += reflected;
+        }
+    }
+    if (!d.indirect) return;
+    for (int c = 0; c < 3; ++c) indirect_[s][c] += d.flux[c];
+    batch_[s * kBatches + batch] += static_cast<float>(reflected);
+}
+
 std::uint64_t PhotonField::trace(std::size_t photons, const LightSources& sources,
                                  const Visibility& visibility, const std::function<bool()>& stop) {
     if (sources.empty()) return 0;
@@ -90,7 +138,6 @@ std::uint64_t PhotonField::trace(std::size_t photons, const LightSources& source
     std::uint64_t rays = 0;
     std::vector<std::vector<Deposit>> deposits(kWaveChunks);
     std::vector<std::uint64_t> wave_rays(kWaveChunks);
-    const int channels = scene_.channels;
     while (remaining > 0 && !stop()) {
         const std::size_t wave = std::min(remaining, kWaveChunks);
         parallel_for(0, wave, [&](std::size_t k) {
@@ -100,17 +147,7 @@ std::uint64_t PhotonField::trace(std::size_t photons, const LightSources& source
         });
         // In chunk order: the sums do not depend on which thread traced what.
         for (std::size_t k = 0; k < wave; ++k) {
-            const std::size_t b = (chunks_ + k) % kBatches;
-            for (const Deposit& d : deposits[k]) {
-                const auto s = static_cast<std::size_t>(d.side);
-                for (int c = 0; c < 3; ++c) total_[s][c] += d.flux[c];
-                if (!d.indirect) continue;
-                for (int c = 0; c < 3; ++c) indirect_[s][c] += d.flux[c];
-                const MeshElement& e = mesh_[static_cast<std::size_t>(mesh_.sides()[s].element)];
-                const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
-                batch_[s * kBatches + b] +=
-                    static_cast<float>(photometric(times(rho, d.flux), channels));
-            }
+            for (const Deposit& d : deposits[k]) add_deposit(d, (chunks_ + k) % kBatches);
             rays += wave_rays[k];
         }
         chunks_ += wave;

@@ -4,9 +4,11 @@
 // one reflection (the indirect field the sensors gather; direct light is found exactly there).
 // The photons are traced in chunks keyed by their index, and chunks are added in index order,
 // so the field is the same for any number of threads. Chunks fall into batches, whose spread
-// measures the field's noise.
+// measures the field's noise, at the sensors and of the surfaces' means (a scene without sensors
+// states its error on those).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -41,7 +43,24 @@ public:
         return batch_[s * kBatches + static_cast<std::size_t>(batch)] * inverse_area_[s] *
                kBatches / static_cast<double>(photons());
     }
+    /// The surfaces whose means count in the surfaces' error measure (counted_surfaces), by
+    /// index into the scene's surfaces.
+    const std::vector<int>& counted_surfaces() const { return counted_; }
+    /// Photometric mean irradiance (lux) on the front of counted surface `k`, in batch `b`.
+    double batch_surface_irradiance(std::size_t k, int b) const {
+        return batch_surface_mean(k, b, 0);
+    }
+    /// Photometric mean light it reflects (ρ ⊙ H, lm/m²) in batch `b`.
+    double batch_surface_reflected(std::size_t k, int b) const {
+        return batch_surface_mean(k, b, 1);
+    }
+    /// The area-weighted mean over every surface's front of the photometric irradiance (lux),
+    /// and of the light reflected (lm/m²).
+    double mean_irradiance() const { return mean_front(0); }
+    double mean_reflected() const { return mean_front(1); }
     std::size_t memory_bytes() const;
+    /// What the surfaces' batch tallies cost per counted surface.
+    static constexpr std::size_t kBytesPerCountedSurface = 2 * kBatches * sizeof(double);
     /// What the tallies cost per side.
     static constexpr std::size_t kBytesPerSide =
         2 * sizeof(Rgb) + kBatches * sizeof(float) + sizeof(double);
@@ -57,6 +76,9 @@ private:
         Rgb flux;
     };
     Rgb per_area(const std::vector<Rgb>& tally, int side) const;
+    double batch_surface_mean(std::size_t k, int b, int what) const;
+    double mean_front(int what) const;
+    void add_deposit(const Deposit& d, std::size_t batch);
     void trace_chunk(std::size_t chunk, const LightSources& sources, const Visibility& visibility,
                      std::vector<Deposit>& out, std::uint64_t& rays) const;
 
@@ -67,6 +89,12 @@ private:
     std::vector<Rgb> total_, indirect_;  ///< summed photon flux per side (divide by photons)
     std::vector<float> batch_;  ///< photometric ρ ⊙ indirect flux, [side · kBatches + b]
     std::vector<double> inverse_area_;  ///< per side, 1/m² (0 for a degenerate element)
+    std::vector<int> counted_;          ///< surface indices
+    std::vector<int> counted_slot_;     ///< per surface, its index in counted_ or −1
+    /// photometric front flux, [(k · kBatches + b) · 2 + what], what 0: irradiance, 1: reflected
+    std::vector<double> surface_batch_;
+    std::array<double, 2> front_{0, 0};  ///< photometric front flux over every surface
+    double total_area_m2_ = 0;           ///< of every surface
 };
 
 }  // namespace radiant

@@ -6,12 +6,6 @@
 namespace radiant {
 namespace {
 
-// Values darker than this share of their kind's mean are measured against that share.
-constexpr double kDarkShare = 0.1;
-// Surfaces smaller than this share of the total area do not count: a chair leg's mean is not
-// what the error bar is about, and the hierarchy refines by power, not by surface.
-constexpr double kSmallSurfaceShare = 0.01;
-
 double relative(double a, double b, double dark) {
     const double scale = std::max(std::abs(a), dark);
     return scale > 0 ? std::abs(a - b) / scale : 0.0;
@@ -81,15 +75,31 @@ double worst_set_rms(const Result& a, const Difference& difference) {
 
 }  // namespace
 
+std::vector<bool> counted_surfaces(const std::vector<double>& areas_m2) {
+    double total = 0;
+    for (const double a : areas_m2) total += a;
+    std::vector<bool> out(areas_m2.size());
+    bool any = false;
+    for (std::size_t i = 0; i < areas_m2.size(); ++i) {
+        out[i] = areas_m2[i] >= kSmallSurfaceShare * total;
+        any = any || out[i];
+    }
+    if (!any) out.assign(areas_m2.size(), true);
+    return out;
+}
+
 double surface_rms_difference(const Result& a, const Result& b) {
     if (a.surfaces.size() != b.surfaces.size()) return 0;
     const DarkScales dark = dark_scales(a);
+    std::vector<double> areas;
+    for (const SurfaceResult& s : a.surfaces) areas.push_back(s.area_m2);
+    const std::vector<bool> counted = counted_surfaces(areas);
     double squares = 0;
     std::size_t count = 0;
     for (std::size_t i = 0; i < a.surfaces.size(); ++i) {
         const SurfaceResult& x = a.surfaces[i];
         const SurfaceResult& y = b.surfaces[i];
-        if (x.area_m2 < kSmallSurfaceShare * dark.area_m2) continue;
+        if (!counted[i]) continue;
         const double e = relative(x.average_irradiance, y.average_irradiance, dark.irradiance);
         const double r = relative(x.average_radiosity, y.average_radiosity, dark.radiosity);
         squares += e * e + r * r;

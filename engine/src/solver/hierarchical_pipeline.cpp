@@ -333,8 +333,8 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         std::snprintf(share, sizeof share, "%.1f %%", 100 * made);
         result.stop_reason = std::string("the hierarchical solver's links made ") + share +
                              " more light than the sources emit, as among densely packed small "
-                             "objects; the monte-carlo method solves such scenes at their "
-                             "sensors";
+                             "objects; the monte-carlo method solves such scenes, with or "
+                             "without sensors";
     }
     // Errors of the links that the mesh check cannot see; not of the iteration, so they do not
     // stop the result here: a finer solve can be asked for (refine_to_tolerance), and only a

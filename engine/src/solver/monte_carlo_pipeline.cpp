@@ -14,6 +14,8 @@
 #include "montecarlo/monte_carlo_error.h"
 #include "montecarlo/photon_field.h"
 #include "montecarlo/sensor_gather.h"
+#include "montecarlo/surface_error.h"
+#include "solution/result_difference.h"
 #include "solution/sensors.h"
 #include "solution/surface_summary.h"
 #include "solver/memory_estimates.h"
@@ -156,14 +158,15 @@ constexpr std::size_t kDisplayBytesPerElement =
 // summaries that snapshots and the result are made of (a snapshot is built while the one it
 // replaces is still shown; the result's mesh is a copy).
 std::size_t level_bytes(const ElementCount& count, std::size_t points, std::size_t components,
-                        std::size_t source_lists, double survival, int display_copies) {
+                        std::size_t surface_tallies, std::size_t source_lists, double survival,
+                        int display_copies) {
     const std::size_t build = count.elements * (sizeof(Triangle) + kEmbreeBuildBytesPerTriangle -
                                                 kEmbreeBytesPerTriangle);
     const std::size_t display =
         static_cast<std::size_t>(display_copies) *
         (count.elements * kDisplayBytesPerElement + count.sides * sizeof(SolvedElement));
     const std::size_t per_component =
-        count.sides * PhotonField::kBytesPerSide +
+        count.sides * PhotonField::kBytesPerSide + surface_tallies +
         points * (SensorGather::bytes_per_point() + 3 * kHeapBlockBytes + sizeof(GatheredPoint));
     return count.elements * (sizeof(MeshElement) + kEmbreeBytesPerTriangle) +
            count.sides * sizeof(ElementSide) + components * per_component +
@@ -182,6 +185,14 @@ std::size_t source_list_bytes(const PreparedScene& scene) {
     for (const Piece& p : scene.pieces)
         emitting += scene.materials[static_cast<std::size_t>(p.material)].emits() ? 1 : 0;
     return points * emitting * sizeof(std::size_t);
+}
+
+// What a photon field's tallies of the surfaces' means cost (PhotonField::counted_surfaces).
+std::size_t surface_tally_bytes(const PreparedScene& scene) {
+    const std::vector<bool> counted = counted_surfaces(scene.surface_area_m2);
+    return counted.size() * 2 * sizeof(int) +
+           static_cast<std::size_t>(std::count(counted.begin(), counted.end(), true)) *
+               PhotonField::kBytesPerCountedSurface;
 }
 
 // How likely a photon survives a bounce, on average over the surfaces' area.
@@ -261,6 +272,14 @@ MonteCarloError maintained_error(const MonteCarloLevel& level) {
         if (!(sum.total <= worst.total)) worst = sum;
     }
     return worst;
+}
+
+// Every light component's photons, weighted by its maintenance factor.
+std::vector<WeightedField> weighted_fields(const MonteCarloLevel& level) {
+    std::vector<WeightedField> out;
+    for (const auto& light : level.lights)
+        out.push_back({&light->field, light->maintenance_factor, light->component});
+    return out;
 }
 
 // The elements' front sides, flat-shaded, in world coordinates.
@@ -346,11 +365,8 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         set_sizes.push_back(set.points.size());
         sensor_points += set.points.size();
     }
-    if (sensor_points == 0) {
-        result.error =
-            "method \"monte-carlo\" measures its error at the sensors, and the scene has none";
-        return result;
-    }
+    // Without sensors the error is stated on the surfaces' means (surface_error).
+    const bool on_surfaces = sensor_points == 0;
     // Each observer's eye is a set of one: its background luminance is measured like a
     // sensor's value, to its own target.
     const std::vector<std::size_t> eye_sizes(scene.observers.size(), 1);
@@ -372,11 +388,12 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     // added only as far as they fit.
     const double survival = mean_survival(scene);
     const std::size_t source_lists = source_list_bytes(scene);
+    const std::size_t surface_tallies = surface_tally_bytes(scene);
     const int display_copies = (observer_ ? 2 : 1) + (options_.want_mesh ? 1 : 0);
     const std::size_t components = std::max<std::size_t>(1, scene.components.components.size());
     auto bytes_of = [&](const ElementCount& count) {
-        return level_bytes(count, sensor_points + eye_sizes.size(), components, source_lists,
-                           survival, display_copies);
+        return level_bytes(count, sensor_points + eye_sizes.size(), components, surface_tallies,
+                           source_lists, survival, display_copies);
     };
     double edge = kEdgeOfFreePath * input.mean_free_path_m;
     // A component is done once its own estimates meet the tolerance: every sum of components
@@ -482,7 +499,9 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 if (done(*light)) continue;
                 light->points = light->gather.evaluate(light->field);
                 light->set_errors = set_errors(light->points, set_sizes);
-                light->error = worst_error(light->set_errors);
+                light->error = on_surfaces
+                                   ? surface_error(scene, {{&light->field, 1.0, light->component}})
+                                   : worst_error(light->set_errors);
                 light->eye_points = light->eyes.evaluate(light->field);
                 light->eye_errors = set_errors(light->eye_points, eye_sizes);
                 // The eyes' are budgeted at the tolerance over their own target.
@@ -491,7 +510,8 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 light->reported = std::min(light->reported, light->error.total);
                 light->eye_reported = std::min(light->eye_reported, light->eye_error.total);
             }
-            error = maintained_error(*level);
+            error = on_surfaces ? surface_error(scene, weighted_fields(*level))
+                                : maintained_error(*level);
             reported = std::min(reported, error.total);
             estimating.seconds += seconds_since(stage_start);
             snapshots_.offer(std::make_shared<const SolvedMesh>(display_mesh(
