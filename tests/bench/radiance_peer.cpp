@@ -11,6 +11,7 @@
 #include <set>
 #include <thread>
 
+#include "combined_runs.h"
 #include "radiance_export.h"
 #include "radiance_run.h"
 
@@ -313,17 +314,12 @@ bool write_radiance_reference(const fs::path& radiance, const Scene& scene, cons
         runs.push_back(std::move(values));
     }
     const std::size_t n = set.count;
-    const double nruns = static_cast<double>(runs.size());
-    std::vector<double> mean(n, 0.0), standard_error(n, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-        for (const auto& r : runs) mean[i] += r[i] / nruns;
-        double var = 0;
-        for (const auto& r : runs) var += (r[i] - mean[i]) * (r[i] - mean[i]);
-        standard_error[i] = runs.size() > 1 ? std::sqrt(var / (nruns - 1) / nruns) : kNaN;
-    }
+    const CombinedRuns combined = combine_runs(runs, options.median);
+    const std::vector<double>& value = combined.value;
+    const std::vector<double>& standard_error = combined.standard_error;
     double overall = 0, sq = 0, worst = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        overall += mean[i] / static_cast<double>(n);
+        overall += value[i] / static_cast<double>(n);
         sq += standard_error[i] * standard_error[i] / static_cast<double>(n);
         worst = std::max(worst, standard_error[i]);
     }
@@ -336,7 +332,7 @@ bool write_radiance_reference(const fs::path& radiance, const Scene& scene, cons
         double x = 0, y = 0, z = 0;
         std::sscanf(line.c_str(), "%lf %lf %lf", &x, &y, &z);
         char buf[160];
-        std::snprintf(buf, sizeof buf, "%.6f,%.6f,%.6f,%.6f\n", x, y, z, mean[i - set.first]);
+        std::snprintf(buf, sizeof buf, "%.6f,%.6f,%.6f,%.6f\n", x, y, z, value[i - set.first]);
         csv_out << buf;
     }
     if (!csv_out) {
@@ -344,10 +340,10 @@ bool write_radiance_reference(const fs::path& radiance, const Scene& scene, cons
         return false;
     }
     out << "radiant-bench: wrote " << csv.string() << ": sensor set \"" << set.name << "\", " << n
-        << " points, mean of " << runs.size() << " runs of rtrace -I -u+ " << options.setting
-        << "; standard error of the mean: RMS " << sci(100 * std::sqrt(sq) / overall)
-        << " %, largest " << sci(100 * worst / overall) << " % of the mean illuminance ("
-        << sci(overall) << " lx)\n";
+        << " points, " << (options.median ? "median" : "mean") << " of " << runs.size()
+        << " runs of rtrace -I -u+ " << options.setting << "; standard error: RMS "
+        << sci(100 * std::sqrt(sq) / overall) << " %, largest " << sci(100 * worst / overall)
+        << " % of the mean illuminance (" << sci(overall) << " lx)\n";
     return true;
 }
 

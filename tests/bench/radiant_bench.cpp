@@ -314,6 +314,8 @@ int main(int argc, char** argv) {
     app.add_option("--radiance-runs", reference_options.runs, "runs of --radiance-reference")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
+    app.add_flag("--radiance-median", reference_options.median,
+                 "--radiance-reference takes the runs' median at each point, not their mean");
     app.add_option("--radiance-reference-settings", reference_options.setting,
                    "rtrace settings of each --radiance-reference run")
         ->capture_default_str();
