@@ -241,19 +241,31 @@ TEST(MonteCarlo, AMirrorImageAgreesWithinBothEstimates) {
     EXPECT_LE(difference, a.stats.error_estimate + b.stats.error_estimate);
 }
 
+// With sensors, and without them (the estimate then read from the surfaces' batch tallies).
 TEST(MonteCarlo, SameAnswerForAnyNumberOfThreads) {
     Scene scene = panel_room_with_sensors();
     scene.luminaires.push_back(testing::luminaire("lamp", {3, 3, 2.5}, 1500));
-    SolveOptions options;
-    options.method = "monte-carlo";
-    options.threads = 1;
-    const Result one = solve(scene, options);
-    options.threads = 2;
-    const Result two = solve(scene, options);
-    ASSERT_EQ(one.status, SolveStatus::converged) << describe(one);
-    EXPECT_EQ(one.sensors.at(0).illuminance, two.sensors.at(0).illuminance);
-    EXPECT_EQ(one.stats.rays, two.stats.rays);
-    EXPECT_EQ(one.stats.error_estimate, two.stats.error_estimate);
+    for (const bool sensors : {true, false}) {
+        if (!sensors) scene.sensors.clear();
+        SolveOptions options;
+        options.method = "monte-carlo";
+        options.threads = 1;
+        const Result one = solve(scene, options);
+        options.threads = 2;
+        const Result two = solve(scene, options);
+        ASSERT_EQ(one.status, SolveStatus::converged) << describe(one);
+        ASSERT_EQ(one.sensors.size(), two.sensors.size());
+        if (sensors) {
+            EXPECT_EQ(one.sensors.at(0).illuminance, two.sensors.at(0).illuminance);
+        }
+        ASSERT_EQ(one.surfaces.size(), two.surfaces.size());
+        for (std::size_t i = 0; i < one.surfaces.size(); ++i) {
+            EXPECT_EQ(one.surfaces[i].average_irradiance, two.surfaces[i].average_irradiance);
+            EXPECT_EQ(one.surfaces[i].average_radiosity, two.surfaces[i].average_radiosity);
+        }
+        EXPECT_EQ(one.stats.rays, two.stats.rays) << sensors;
+        EXPECT_EQ(one.stats.error_estimate, two.stats.error_estimate) << sensors;
+    }
 }
 
 // A 1.2 × 0.6 m panel 2 m above three points, and 3.5 cm above them a black bar 5 mm wide (a
