@@ -48,7 +48,7 @@ constexpr std::size_t kMaxAutoDirectPatches = 1500;
 // by Monte Carlo, which measures the noise of the surfaces' means and bounds their error there;
 // among close objects the hierarchy's estimate was under its error (at 0.01, open plan of 377
 // polygons: 2.8 % for an estimate of 0.90 %, in 8 s; meeting room: 1.1 % for 0.72 %; furnished
-// office: stopped at 58 s), Monte Carlo's not (0.36–0.51 % for 0.76–0.99 %, 0.2–1.1 s). A room
+// office: stopped at 58 s), Monte Carlo's not (0.26–0.50 % for 0.80–0.99 %, 0.35–1.9 s). A room
 // with less in it (two rooms joined by a door: 0.23 % for 0.57 %) is left to the hierarchy,
 // which draws smooth surfaces where the photons' elements are speckled.
 constexpr std::size_t kMaxAutoHierarchicalPolygons = 100;
