@@ -56,7 +56,7 @@ MeanAndError batch_mean(const Batch& batch) {
     double mean = 0;
     for (int b = 0; b < PhotonField::kBatches; ++b) {
         values[static_cast<std::size_t>(b)] = batch(b);
-        mean += batch(b) / PhotonField::kBatches;
+        mean += values[static_cast<std::size_t>(b)] / PhotonField::kBatches;
     }
     return {mean, std::sqrt(sample_variance_of_mean(values.data(), PhotonField::kBatches))};
 }

@@ -247,10 +247,22 @@ std::vector<double> maintained_values(const MonteCarloLevel& level, std::size_t 
     return out;
 }
 
+// Every light component's photons, weighted by its maintenance factor.
+std::vector<WeightedField> weighted_fields(const MonteCarloLevel& level) {
+    std::vector<WeightedField> out;
+    for (const auto& light : level.lights)
+        out.push_back({&light->field, light->maintenance_factor, light->component});
+    return out;
+}
+
 // The estimate of the maintained values: per set, Σ factor × each component's RMS error over
-// Σ factor × its mean, a bound for any correlation between them (Minkowski); the worst set.
-MonteCarloError maintained_error(const MonteCarloLevel& level) {
+// Σ factor × its mean, a bound for any correlation between them (Minkowski); the worst set. A
+// scene without sensors: the same sum over its surfaces (surface_error). One component's is its
+// own.
+MonteCarloError maintained_error(const PreparedScene& scene, const MonteCarloLevel& level,
+                                 bool on_surfaces) {
     if (level.lights.size() == 1) return level.lights.front()->error;
+    if (on_surfaces) return surface_error(scene, weighted_fields(level));
     MonteCarloError worst;
     for (std::size_t s = 0; s < level.lights.front()->set_errors.size(); ++s) {
         double mean = 0;
@@ -272,14 +284,6 @@ MonteCarloError maintained_error(const MonteCarloLevel& level) {
         if (!(sum.total <= worst.total)) worst = sum;
     }
     return worst;
-}
-
-// Every light component's photons, weighted by its maintenance factor.
-std::vector<WeightedField> weighted_fields(const MonteCarloLevel& level) {
-    std::vector<WeightedField> out;
-    for (const auto& light : level.lights)
-        out.push_back({&light->field, light->maintenance_factor, light->component});
-    return out;
 }
 
 // The elements' front sides, flat-shaded, in world coordinates.
@@ -510,8 +514,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 light->reported = std::min(light->reported, light->error.total);
                 light->eye_reported = std::min(light->eye_reported, light->eye_error.total);
             }
-            error = on_surfaces ? surface_error(scene, weighted_fields(*level))
-                                : maintained_error(*level);
+            error = maintained_error(scene, *level, on_surfaces);
             reported = std::min(reported, error.total);
             estimating.seconds += seconds_since(stage_start);
             snapshots_.offer(std::make_shared<const SolvedMesh>(display_mesh(
