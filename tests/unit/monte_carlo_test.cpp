@@ -322,6 +322,26 @@ TEST(MonteCarlo, MeasuresTheSurfacesWithoutSensors) {
     EXPECT_EQ(r.stats.error_parts.discretisation, 0);
 }
 
+// Light that enters a gap narrower than the open-area test (a row of books 1 cm apart) lands on
+// sides counted as hidden; it is absorbed there all the same. With black surfaces every photon
+// is absorbed where it first lands, so the surfaces absorb exactly what the lamp emits.
+TEST(MonteCarlo, LightInAHiddenGapIsAbsorbedThere) {
+    Scene scene;
+    scene.materials = {testing::gray("black", 0)};
+    scene.surfaces = testing::closed_room(4, 4, 3, "black");
+    for (int i = 0; i < 20; ++i) {
+        const double x = 1.4 + 0.03 * i;
+        scene.surfaces.push_back(testing::box_surface("book " + std::to_string(i), "black",
+                                                      {x, 1.85, 0}, {x + 0.02, 2.15, 0.3},
+                                                      /*facing_in=*/false));
+    }
+    scene.luminaires.push_back(
+        testing::luminaire("lamp", {1.7, 2, 0.8}, 1000, Distribution::isotropic, {0, 0, -1}));
+    const Result r = testing::solve_with(scene, "monte-carlo", 0.05);
+    ASSERT_NE(r.status, SolveStatus::failed) << describe(r);
+    EXPECT_NEAR(r.stats.absorbed_flux_lm, r.stats.emitted_flux_lm, 1e-9 * 1000) << describe(r);
+}
+
 TEST(MonteCarlo, ReportsItsStages) {
     const Result r = testing::solve_with(panel_room_with_sensors(), "monte-carlo");
     std::vector<std::string> names;

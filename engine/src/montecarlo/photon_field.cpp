@@ -60,10 +60,17 @@ double PhotonField::mean_front(int what) const {
            (static_cast<double>(photons()) * total_area_m2_);
 }
 
-Rgb PhotonField::per_area(const std::vector<Rgb>& tally, int side) const {
+Rgb PhotonField::indirect(int side) const {
     const auto s = static_cast<std::size_t>(side);
     const double scale = chunks_ ? inverse_area_[s] / static_cast<double>(photons()) : 0.0;
-    return {tally[s][0] * scale, tally[s][1] * scale, tally[s][2] * scale};
+    return {indirect_[s][0] * scale, indirect_[s][1] * scale, indirect_[s][2] * scale};
+}
+
+Rgb PhotonField::total(int side) const {
+    const auto s = static_cast<std::size_t>(side);
+    const double area = mesh_[static_cast<std::size_t>(mesh_.sides()[s].element)].area_m2;
+    const double scale = chunks_ && area > 0 ? 1 / (area * static_cast<double>(photons())) : 0.0;
+    return {total_[s][0] * scale, total_[s][1] * scale, total_[s][2] * scale};
 }
 
 std::size_t PhotonField::wave_bytes(double mean_reflectance) {

@@ -33,10 +33,12 @@ public:
 
     std::size_t photons() const { return chunks_ * kChunkPhotons; }
 
-    /// Irradiance (lux, per channel) on `side` after one reflection or more.
-    Rgb indirect(int side) const { return per_area(indirect_, side); }
-    /// All irradiance on `side`: direct and reflected.
-    Rgb total(int side) const { return per_area(total_, side); }
+    /// Irradiance (lux, per channel) on `side` after one reflection or more, per open area (what
+    /// a gather ray that lands on the side sees).
+    Rgb indirect(int side) const;
+    /// All irradiance on `side`, direct and reflected, averaged over the element's whole area:
+    /// light that enters a gap narrower than the open-area test lands on the hidden part.
+    Rgb total(int side) const;
     /// Photometric light reflected by `side` from indirect irradiance (ρ ⊙ H_ind), in batch `b`.
     double batch_reflected(int side, int batch) const {
         const auto s = static_cast<std::size_t>(side);
@@ -75,7 +77,6 @@ private:
         bool indirect;
         Rgb flux;
     };
-    Rgb per_area(const std::vector<Rgb>& tally, int side) const;
     double batch_surface_mean(std::size_t k, int b, int what) const;
     double mean_front(int what) const;
     void add_deposit(const Deposit& d, std::size_t batch);

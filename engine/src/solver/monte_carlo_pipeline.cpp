@@ -216,13 +216,10 @@ std::vector<SolvedElement> solved_sides(const PreparedScene& scene, const Elemen
         const ElementSide& side = mesh.sides()[s];
         const MeshElement& e = mesh[static_cast<std::size_t>(side.element)];
         const PreparedMaterial& m = scene.materials[static_cast<std::size_t>(e.material)];
-        // The field's light is per open area; the surfaces' averages are over their whole area.
-        const double open = e.area_m2 > 0 ? side.open_area_m2 / e.area_m2 : 0.0;
         Rgb h{0, 0, 0}, b{0, 0, 0};
         for (const auto& light : level.lights) {
             const double mf = light->maintenance_factor;
-            Rgb hc = light->field.total(static_cast<int>(s));
-            for (double& v : hc) v *= open;
+            const Rgb hc = light->field.total(static_cast<int>(s));
             Rgb bc = times(m.reflectance, hc);
             if (!side.back && (light->component < 0 || light->component == m.component)) {
                 for (int c = 0; c < 3; ++c) bc[c] += m.exitance_lm_m2[c];
