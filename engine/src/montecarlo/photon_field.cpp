@@ -32,7 +32,11 @@ PhotonField::PhotonField(const PreparedScene& scene, const ElementMesh& mesh, st
     batch_.assign(sides * kBatches, 0.0f);
     inverse_area_.resize(sides);
     for (std::size_t s = 0; s < sides; ++s) {
-        const double area = mesh.sides()[s].open_area_m2;
+        // A side with no open area is seen only through a gap narrower than the open-area test
+        // (the faces between two books), lit by what enters it: its light over its whole area.
+        const ElementSide& side = mesh.sides()[s];
+        const double open = side.open_area_m2;
+        const double area = open > 0 ? open : mesh[static_cast<std::size_t>(side.element)].area_m2;
         inverse_area_[s] = area > 0 ? 1 / area : 0.0;
     }
     const std::vector<bool> counted = radiant::counted_surfaces(scene.surface_area_m2);
