@@ -325,15 +325,23 @@ bool write_radiance_reference(const fs::path& radiance, const Scene& scene, cons
     }
     std::ifstream points_in(dir / "points.txt");
     std::ofstream csv_out(csv);
-    csv_out << "x,y,z,irradiance\n";
+    // The standard error lets the benchmark tell a row's miss from the reference's own noise;
+    // one run has none.
+    const bool with_error = runs.size() > 1;
+    csv_out << (with_error ? "x,y,z,irradiance,standard_error\n" : "x,y,z,irradiance\n");
     std::string line;
     for (std::size_t i = 0; i < set.first + n && std::getline(points_in, line); ++i) {
         if (i < set.first) continue;
         double x = 0, y = 0, z = 0;
         std::sscanf(line.c_str(), "%lf %lf %lf", &x, &y, &z);
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "%.6f,%.6f,%.6f,%.6f\n", x, y, z, value[i - set.first]);
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "%.6f,%.6f,%.6f,%.6f", x, y, z, value[i - set.first]);
         csv_out << buf;
+        if (with_error) {
+            std::snprintf(buf, sizeof buf, ",%.6f", standard_error[i - set.first]);
+            csv_out << buf;
+        }
+        csv_out << '\n';
     }
     if (!csv_out) {
         log << "radiant-bench: cannot write " << csv << '\n';

@@ -76,9 +76,10 @@ struct RadianceReferenceOptions {
 
 /// Averages `runs` independent RADIANCE runs at the first sensor set's points (or takes their
 /// median) and writes them as `x,y,z,irradiance` (lux; the format of
-/// tests/data/radiance/room-s2.reference.csv). Prints each run's time and the noise: the
-/// standard error per point (of a median, √(π/2) times the mean's), its RMS and largest value
-/// relative to the mean illuminance. Returns false (with the reason on `log`) on failure.
+/// tests/data/radiance/room-s2.reference.csv), with a fifth column `standard_error` (lux; of a
+/// median, √(π/2) times the mean's) when there are several runs. Prints each run's time and the
+/// noise: the standard error's RMS and largest value relative to the mean illuminance. Returns
+/// false (with the reason on `log`) on failure.
 bool write_radiance_reference(const std::filesystem::path& radiance, const Scene& scene,
                               const std::filesystem::path& csv,
                               const RadianceReferenceOptions& options, std::ostream& out,

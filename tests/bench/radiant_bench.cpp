@@ -91,17 +91,6 @@ BenchScene high_reflectance_furnace(const Scene& furnace, double reflectance) {
     return bench;
 }
 
-std::vector<double> read_radiance_csv(const fs::path& csv) {
-    std::ifstream in(csv);
-    std::string line;
-    std::getline(in, line);  // header x,y,z,irradiance
-    std::vector<double> values;
-    while (std::getline(in, line)) {
-        if (!line.empty()) values.push_back(std::stod(line.substr(line.rfind(',') + 1)));
-    }
-    return values;
-}
-
 std::optional<Scene> load(const fs::path& file) {
     auto outcome = proto::load_scene_file(file);
     for (const auto& p : outcome.problems) {
@@ -445,8 +434,8 @@ int main(int argc, char** argv) {
                 bench.needs_reference = true;
             } else {
                 const SensorSet& first = bench.scene.sensors.at(0);
-                bench.reference = {"RADIANCE (" + beside.filename().string() + ")", nullptr,
-                                   first.name, read_radiance_csv(beside)};
+                bench.reference = read_reference_csv(
+                    beside, "RADIANCE (" + beside.filename().string() + ")", first.name);
                 if (bench.reference.illuminance.size() != first.points.size()) {
                     std::cerr << "radiant-bench: " << beside.string() << " has "
                               << bench.reference.illuminance.size() << " values, but sensor set \""
@@ -463,8 +452,8 @@ int main(int argc, char** argv) {
             bench.scene = *scene;
             // The -dj 1 reference: the shared one's indirect part is 0.2 % low (see
             // tests/data/radiance/README.md), more than a tight estimate at 0.01.
-            bench.reference = {"RADIANCE (-dj 1)", nullptr, "workplane",
-                               read_radiance_csv(data / "radiance" / "room-s2.dj1-reference.csv")};
+            bench.reference = read_reference_csv(data / "radiance" / "room-s2.dj1-reference.csv",
+                                                 "RADIANCE (-dj 1)", "workplane");
         } else if (const auto rho = std::find_if(kHighReflectances.begin(), kHighReflectances.end(),
                                                  [&](double r) { return furnace_name(r) == name; });
                    rho != kHighReflectances.end()) {

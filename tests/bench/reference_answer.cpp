@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 namespace radiant::bench {
 namespace {
@@ -54,6 +56,29 @@ RelativeError summarise(const std::vector<double>& errors) {
 }
 
 }  // namespace
+
+ReferenceAnswer read_reference_csv(const std::filesystem::path& csv, const std::string& source,
+                                   const std::string& sensor) {
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    const bool with_error = line == "x,y,z,irradiance,standard_error";
+    ReferenceAnswer out{source, nullptr, sensor, {}};
+    double squares = 0;
+    while (std::getline(in, line)) {
+        if (line.empty()) continue;
+        std::vector<double> columns;
+        std::istringstream row(line);
+        for (std::string cell; std::getline(row, cell, ',');) columns.push_back(std::stod(cell));
+        out.illuminance.push_back(columns.at(3));
+        if (with_error) squares += columns.at(4) * columns.at(4);
+    }
+    const auto n = static_cast<double>(out.illuminance.size());
+    double mean = 0;
+    for (const double v : out.illuminance) mean += v / n;
+    if (with_error && mean > 0) out.error_estimate = std::sqrt(squares / n) / mean;
+    return out;
+}
 
 const std::vector<double>& new_lamp_illuminance(const SensorResult& set) {
     return set.initial ? set.initial->illuminance : set.illuminance;

@@ -7,6 +7,7 @@
 // |E − Eref| / mean(Eref) per point, so dark points (inside a shelf) do not divide by zero.
 #pragma once
 
+#include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
@@ -22,8 +23,9 @@ struct ReferenceAnswer {
     nlohmann::json checks;            ///< expected.json checks; null when comparing sensors
     std::string sensor;               ///< the sensor set compared point by point
     std::vector<double> illuminance;  ///< new lamps (no maintenance factor)
-    /// The reference solve's own error estimate (0: exact answers, and RADIANCE's, whose error
-    /// the benchmark does not know); a row's measured error is the true one only within it.
+    /// The reference's own error estimate: a reference solve's, a RADIANCE reference's standard
+    /// error (RMS over the mean) where its CSV gives one, else 0 (exact answers, and RADIANCE
+    /// references without it); a row's measured error is the true one only within it.
     double error_estimate = 0;
 };
 
@@ -31,6 +33,12 @@ struct RelativeError {
     double rms = std::numeric_limits<double>::quiet_NaN();
     double max = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// A reference CSV (`x,y,z,irradiance`, perhaps with a fifth column `standard_error`, as
+/// --radiance-reference writes them) as the reference of sensor set `sensor`; its error estimate
+/// is the standard error's RMS over the mean illuminance where the file gives one, else 0.
+ReferenceAnswer read_reference_csv(const std::filesystem::path& csv, const std::string& source,
+                                   const std::string& sensor);
 
 /// A sensor set's values for new lamps: its initial values where a maintenance factor applies.
 /// References and results are compared on these, as RADIANCE knows no maintenance factor.

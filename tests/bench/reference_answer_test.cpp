@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 
 namespace radiant::bench {
@@ -17,6 +19,26 @@ Result result_with(std::vector<double> maintained, std::optional<std::vector<dou
     Result r;
     r.sensors.push_back(std::move(set));
     return r;
+}
+
+// A reference made of several runs carries its standard error, which the benchmark counts as
+// the reference's own error; one without it has none the benchmark knows of.
+TEST(ReferenceAnswer, ReadsTheStandardErrorOfAReferenceCsv) {
+    const auto dir = std::filesystem::temp_directory_path();
+    const auto with = dir / "radiant-reference-with-error.csv";
+    const auto without = dir / "radiant-reference-without-error.csv";
+    std::ofstream(with) << "x,y,z,irradiance,standard_error\n"
+                        << "0,0,0.8,100,1\n1,0,0.8,300,7\n";
+    std::ofstream(without) << "x,y,z,irradiance\n0,0,0.8,100\n1,0,0.8,300\n";
+    const ReferenceAnswer a = read_reference_csv(with, "RADIANCE", "work plane");
+    EXPECT_EQ(a.illuminance, (std::vector<double>{100, 300}));
+    EXPECT_DOUBLE_EQ(a.error_estimate, std::sqrt((1.0 + 49.0) / 2) / 200);
+    EXPECT_EQ(a.sensor, "work plane");
+    const ReferenceAnswer b = read_reference_csv(without, "RADIANCE", "work plane");
+    EXPECT_EQ(b.illuminance, (std::vector<double>{100, 300}));
+    EXPECT_EQ(b.error_estimate, 0);
+    std::filesystem::remove(with);
+    std::filesystem::remove(without);
 }
 
 // RADIANCE references are of new lamps: a maintained result (factor 0.8) is scored on its

@@ -77,8 +77,10 @@ execute_process(COMMAND ${BENCH} --radiance-reference ${DATA}/radiance/room-s2.j
 if(missing EQUAL -1)
   file(STRINGS ${OUT}-reference.csv lines)
   list(LENGTH lines n)
-  string(FIND "${out}" "standard error of the mean" noise)
-  if(NOT rc EQUAL 0 OR NOT n EQUAL 82 OR noise EQUAL -1)
+  list(GET lines 0 header)
+  string(FIND "${out}" "standard error: RMS" noise)
+  if(NOT rc EQUAL 0 OR NOT n EQUAL 82 OR noise EQUAL -1
+     OR NOT header STREQUAL "x,y,z,irradiance,standard_error")
     message(FATAL_ERROR "no RADIANCE reference (${rc}, ${n} lines): ${out}${err}")
   endif()
 else()
