@@ -34,7 +34,7 @@ public:
     std::size_t photons() const { return chunks_ * kChunkPhotons; }
 
     /// Irradiance (lux, per channel) on `side` after one reflection or more, per open area (what
-    /// a gather ray that lands on the side sees).
+    /// a gather ray that lands on the side sees), or per area where the side has no open area.
     Rgb indirect(int side) const;
     /// All irradiance on `side`, direct and reflected, averaged over the element's whole area:
     /// light that enters a gap narrower than the open-area test lands on the hidden part.
