@@ -6,6 +6,15 @@
 #include <numbers>
 
 namespace radiant::bench {
+namespace {
+
+double median_of(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t half = values.size() / 2;
+    return values.size() % 2 ? values[half] : (values[half - 1] + values[half]) / 2;
+}
+
+}  // namespace
 
 CombinedRuns combine_runs(const std::vector<std::vector<double>>& runs, bool median) {
     CombinedRuns out;
@@ -23,10 +32,13 @@ CombinedRuns combine_runs(const std::vector<std::vector<double>>& runs, bool med
                                        : std::numeric_limits<double>::quiet_NaN();
         double value = mean;
         if (median) {
-            std::sort(values.begin(), values.end());
-            const std::size_t half = values.size() / 2;
-            value = values.size() % 2 ? values[half] : (values[half - 1] + values[half]) / 2;
-            error *= std::sqrt(std::numbers::pi / 2);
+            value = median_of(values);
+            // The spread from the median absolute deviation (1.4826 times it is a normal's σ), so
+            // that the bright path the median resists does not make its error either.
+            std::vector<double> deviations;
+            for (const double v : values) deviations.push_back(std::abs(v - value));
+            const double sigma = 1.4826 * median_of(deviations);
+            if (runs.size() > 1) error = std::sqrt(std::numbers::pi / 2) * sigma / std::sqrt(n);
         }
         out.value.push_back(value);
         out.standard_error.push_back(error);

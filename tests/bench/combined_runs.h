@@ -9,7 +9,8 @@ namespace radiant::bench {
 struct CombinedRuns {
     std::vector<double> value;
     /// Of the mean, from the runs' spread (NaN for a single run); of a median, √(π/2) times
-    /// that, the normal case's ratio.
+    /// that (the normal case's ratio), the spread measured by the median absolute deviation so
+    /// that one run's outlier does not set it.
     std::vector<double> standard_error;
 };
 
