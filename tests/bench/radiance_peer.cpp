@@ -14,6 +14,7 @@
 #include "combined_runs.h"
 #include "radiance_export.h"
 #include "radiance_run.h"
+#include "reference_csv_file.h"
 
 namespace radiant::bench {
 namespace {
@@ -328,7 +329,8 @@ bool write_radiance_reference(const fs::path& radiance, const Scene& scene, cons
     // The standard error lets the benchmark tell a row's miss from the reference's own noise;
     // one run has none.
     const bool with_error = runs.size() > 1;
-    csv_out << (with_error ? "x,y,z,irradiance,standard_error\n" : "x,y,z,irradiance\n");
+    csv_out << (with_error ? testing::kReferenceCsvHeaderWithError : testing::kReferenceCsvHeader)
+            << '\n';
     std::string line;
     for (std::size_t i = 0; i < set.first + n && std::getline(points_in, line); ++i) {
         if (i < set.first) continue;

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+
+#include "reference_csv_file.h"
 
 namespace radiant::bench {
 namespace {
@@ -59,24 +59,13 @@ RelativeError summarise(const std::vector<double>& errors) {
 
 ReferenceAnswer read_reference_csv(const std::filesystem::path& csv, const std::string& source,
                                    const std::string& sensor) {
-    std::ifstream in(csv);
-    std::string line;
-    std::getline(in, line);
-    const bool with_error = line == "x,y,z,irradiance,standard_error";
-    ReferenceAnswer out{source, nullptr, sensor, {}};
-    double squares = 0;
-    while (std::getline(in, line)) {
-        if (line.empty()) continue;
-        std::vector<double> columns;
-        std::istringstream row(line);
-        for (std::string cell; std::getline(row, cell, ',');) columns.push_back(std::stod(cell));
-        out.illuminance.push_back(columns.at(3));
-        if (with_error) squares += columns.at(4) * columns.at(4);
-    }
-    const auto n = static_cast<double>(out.illuminance.size());
-    double mean = 0;
-    for (const double v : out.illuminance) mean += v / n;
-    if (with_error && mean > 0) out.error_estimate = std::sqrt(squares / n) / mean;
+    const testing::ReferenceCsv file = testing::read_reference_csv_file(csv);
+    ReferenceAnswer out{source, nullptr, sensor, file.illuminance};
+    const auto n = static_cast<double>(file.illuminance.size());
+    double mean = 0, squares = 0;
+    for (const double v : file.illuminance) mean += v / n;
+    for (const double e : file.standard_error) squares += e * e / n;
+    if (!file.standard_error.empty() && mean > 0) out.error_estimate = std::sqrt(squares) / mean;
     return out;
 }
 
