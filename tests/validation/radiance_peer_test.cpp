@@ -1,12 +1,15 @@
 // The RADIANCE converter against RADIANCE itself (docs/radiance-peer.md). Skipped unless
-// RADIANCE's oconv and rtrace are on PATH. room-s2 converted and traced must agree with the
-// reference made outside the project (shared/validation/radiance/README.md) within RADIANCE's
-// noise; rtrace's direct light from each kind of Radiant emitter must be Radiant's own.
+// RADIANCE's oconv and rtrace are on PATH (all but the RAYPATH test). room-s2 converted and traced
+// must agree with the reference made outside the project (shared/validation/radiance/README.md)
+// within RADIANCE's noise; rtrace's direct light from each kind of Radiant emitter must be
+// Radiant's own.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -171,6 +174,23 @@ TEST(RadiancePeer, DirectLightOfEveryEmitterIsRadiantsOwn) {
         }
     }
     RecordProperty("worst_relative", std::to_string(worst));
+}
+
+// A RAYPATH that misses rayinit.cal (one set by hand to a checkout's lib/, which a CMake build
+// does not make) must not fail every run: the build's own lib comes after it.
+TEST(RadiancePeer, RaypathFallsBackOnTheBuildsLib) {
+    const fs::path build = work_dir("raypath") / "radiance-build";
+    fs::create_directories(build / "bin");
+    const char* saved = std::getenv("RAYPATH");
+    const std::string before = saved ? saved : "";
+    ::setenv("RAYPATH", ".:/nowhere/lib", 1);
+    EXPECT_EQ(radiance::raypath_for(build / "bin"), ".:/nowhere/lib");
+    fs::create_directories(build / "lib");
+    std::ofstream(build / "lib" / "rayinit.cal") << "{ empty }\n";
+    EXPECT_EQ(radiance::raypath_for(build / "bin"), ".:/nowhere/lib:" + (build / "lib").string());
+    ::unsetenv("RAYPATH");
+    EXPECT_EQ(radiance::raypath_for(build / "bin"), ".:" + (build / "lib").string());
+    if (saved) ::setenv("RAYPATH", before.c_str(), 1);
 }
 
 }  // namespace

@@ -386,8 +386,9 @@ struct Writer {
             r << "surface-points.txt (" << summary.surface_points
               << " points on surfaces) with surface-samples.txt (surface, area weight m2)\n";
         }
-        r << "\nRADIANCE's lib (rayinit.cal) must be on RAYPATH; run in this directory:\n\n"
-          << "  export RAYPATH=.:/work/radiance/lib\n"
+        r << "\nRADIANCE's lib (rayinit.cal; radiance-build/lib in a CMake build) must be on\n"
+          << "RAYPATH; run in this directory:\n\n"
+          << "  export RAYPATH=.:/path/to/radiance-build/lib\n"
           << "  oconv scene.rad > scene.oct\n"
           << "  rtrace -I -h -ab 8 -aa 0 -ad 2048 -lw 1e-4"
           << (summary.needs_all_shadow_tests ? " -dt 0" : "")

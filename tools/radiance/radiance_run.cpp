@@ -57,10 +57,13 @@ std::optional<fs::path> find_radiance() {
 }
 
 std::string raypath_for(const fs::path& bin) {
-    if (const char* set = std::getenv("RAYPATH"); set && *set) return set;
+    std::string path = ".";
+    if (const char* set = std::getenv("RAYPATH"); set && *set) path = set;
+    // The build's own lib goes last, so a RAYPATH that misses rayinit.cal still runs and files
+    // of the user's own directories still come first.
     const fs::path lib = bin.parent_path() / "lib";
-    if (fs::exists(lib / "rayinit.cal")) return ".:" + lib.string();
-    return ".";
+    if (fs::exists(lib / "rayinit.cal")) path.append(":").append(lib.string());
+    return path;
 }
 
 std::string make_octree(const fs::path& bin, const fs::path& dir) {

@@ -15,8 +15,8 @@ namespace radiant::radiance {
 /// The directory on PATH that holds both `oconv` and `rtrace`, if any.
 std::optional<std::filesystem::path> find_radiance();
 
-/// RAYPATH for RADIANCE in `bin`: the environment's when set, else ".:" and `bin`/../lib when it
-/// holds rayinit.cal (an install made with CMAKE_INSTALL_PREFIX), else ".".
+/// RAYPATH for RADIANCE in `bin`: the environment's (else "."), then `bin`/../lib when it holds
+/// rayinit.cal (a CMake build directory, or an install made with CMAKE_INSTALL_PREFIX).
 std::string raypath_for(const std::filesystem::path& bin);
 
 struct RtraceRun {
