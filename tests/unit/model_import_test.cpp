@@ -126,6 +126,35 @@ TEST(ModelImport, StripsAndMirroredNodesKeepTheFrontFace) {
     }
 }
 
+// A glTF material that is doubleSided is lit and reflects on its back (a plant's leaves, a
+// sheet of paper); read as one-sided, every leaf's back would be black and absorb.
+TEST(ModelImport, GltfDoubleSidedMaterialsAreTwoSided) {
+    for (const bool double_sided : {false, true}) {
+        const std::string square = test::single_primitive_glb(
+            {0, 0, 0, 1, 0, 0, 0, 0, -1, 1, 0, -1}, {}, TINYGLTF_MODE_TRIANGLE_STRIP);
+        tinygltf::Model model;
+        tinygltf::TinyGLTF reader;
+        std::string error, warning;
+        ASSERT_TRUE(reader.LoadBinaryFromMemory(
+            &model, &error, &warning, reinterpret_cast<const unsigned char*>(square.data()),
+            static_cast<unsigned>(square.size())))
+            << error;
+        tinygltf::Material leaf;
+        leaf.name = "leaf";
+        leaf.doubleSided = double_sided;
+        leaf.pbrMetallicRoughness.baseColorFactor = {0.1, 0.3, 0.1, 1};
+        model.materials.push_back(leaf);
+        model.meshes[0].primitives[0].material = 0;
+        const Json doc =
+            scene_with({{"name", "plant"}, {"gltf", test::base64(test::glb_of(model))}});
+        const ParseOutcome outcome = parse_scene(doc.dump());
+        ASSERT_TRUE(outcome.ok()) << outcome.problems[0].message;
+        const Material* m = find_material(*outcome.scene, "plant/leaf");
+        ASSERT_NE(m, nullptr);
+        EXPECT_EQ(m->two_sided, double_sided);
+    }
+}
+
 TEST(ModelImport, BrokenModelsNameTheKeyAndTheLine) {
     const ParseOutcome bad_vertex =
         load_scene_file(testing::data_path("bad/import-obj-bad-vertex.json"));

@@ -128,7 +128,7 @@ std::string Reader::read_scene(ImportedGeometry& out) {
         const auto& f = m.pbrMetallicRoughness.baseColorFactor;
         out.materials.push_back(
             {m.name.empty() ? "material " + std::to_string(out.materials.size()) : m.name,
-             f.size() >= 3 ? Rgb{f[0], f[1], f[2]} : Rgb{1, 1, 1}});
+             f.size() >= 3 ? Rgb{f[0], f[1], f[2]} : Rgb{1, 1, 1}, m.doubleSided});
     }
     // Depth first with an explicit stack: a chain of nodes as long as the file allows must not
     // recurse once per node. Each node is visited at most once, so the walk ends.

@@ -17,6 +17,7 @@ namespace radiant::proto {
 struct ImportedMaterial {
     std::string name;
     Rgb reflectance{0, 0, 0};
+    bool two_sided = false;  ///< glTF `doubleSided`: the back is lit and reflects as the front
 };
 
 /// The faces of the file that share one material.

@@ -96,6 +96,7 @@ std::variant<ImportedSurfaces, std::string> import_surface(const ImportRequest& 
         material.reflectance = m.reflectance;
         material.rgb_reflectance =
             m.reflectance[0] != m.reflectance[1] || m.reflectance[1] != m.reflectance[2];
+        material.two_sided = m.two_sided;
         Surface& s = out.surfaces.emplace_back();
         s.name = model.parts.size() == 1 ? request.name : name;
         s.material = name;
