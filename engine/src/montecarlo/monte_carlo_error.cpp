@@ -38,7 +38,7 @@ constexpr double kBiasSignificance = 3;
 // Reading element averages is biased at first order in the size where elements straddle edges
 // of light and of sight at once (the contact lines of clutter: books on a board, a case's
 // corners), so the fine level's bias is the levels' difference over √2 − 1. Taken as it was,
-// the difference put a library's spines 0.13 % dark under a discretisation part of 0.069 %;
+// the difference put a library's spines 0.14 % dark under a discretisation part of 0.069 %;
 // elements of 0.4 times the size moved them 0.1 % (tests/bench/results/library.md).
 const double kCoarseToBias = 1 / (std::sqrt(2.0) - 1);
 // Bias may take this much of the target² before the noise budget is held to what it leaves.
