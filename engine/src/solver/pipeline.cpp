@@ -125,6 +125,15 @@ double richardson_estimate(const std::string& method, const Result& fine, const 
            (std::pow(ratio, kDenseErrorOrder) - 1);
 }
 
+// Without a matrix the patches keep their target size, and only gaps narrower than an eighth of
+// it cut them (the hierarchical roots' gap at this tolerance): every patch costs a factor in
+// every shot, and the dense mesh's half-patch gap splits the floor along every piece of
+// furniture (office-x64: 100 000 patches).
+MeshingOptions dense_meshing(double patch_edge, std::size_t max_patches, bool matrix_free) {
+    return matrix_free ? MeshingOptions{patch_edge, max_patches, 0.125 * patch_edge}
+                       : MeshingOptions{patch_edge, max_patches};
+}
+
 // How much finer `fine`'s discretisation is than `coarse`'s, in the units its error goes with:
 // the tolerance for the hierarchical solver, patches for a dense mesh (error ∝ h² ∝ 1/patches),
 // which stops growing with the tolerance at the scene's coarsest mesh.
@@ -181,17 +190,30 @@ void Pipeline::publish_final(const Result& result) {
 }
 
 void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::string& method,
-                                    Result& result) {
+                                    Result& result, bool matrix_free) {
     const double coarse_tolerance =
         std::min(kCheckCoarsening * options_.tolerance, kMaxCheckTolerance);
     const double ratio = coarse_tolerance / options_.tolerance;
+    // Matrix-free shooting is never refined: where no coarser mesh measures its mesh's error, it
+    // reports the bound of its linear system alone.
+    const double unchecked = matrix_free ? 0.0 : kUncheckedShare * options_.tolerance;
     if (!(ratio >= kMinCheckRatio)) {
         // No coarser solve to measure by (tolerances above kMaxCheckTolerance / kMinCheckRatio):
         // as for a mesh that cannot coarsen, a finer solve measures the error instead.
-        result.stats.error_parts.discretisation = kUncheckedShare * options_.tolerance;
-        result.stats.error_estimate =
-            std::max(result.stats.error_estimate, result.stats.error_parts.discretisation);
+        result.stats.error_parts.discretisation = unchecked;
+        result.stats.error_estimate = std::max(result.stats.error_estimate, unchecked);
         return;
+    }
+    // A mesh made of the model's own polygons may not coarsen: without a matrix, that is
+    // known before solving it again.
+    if (matrix_free) {
+        const double edge = target_patch_edge(prepared.mean_free_path_m, coarse_tolerance);
+        const std::size_t coarse_patches =
+            PatchMesh::count(prepared.scene, dense_meshing(edge, kMaxMatrixFreePatches, true));
+        if (!(static_cast<double>(result.stats.patches) >=
+              kMinCheckRatio * static_cast<double>(coarse_patches))) {
+            return;
+        }
     }
     // Not yet the answer's estimate: the mesh's part comes from this check.
     report("checking", 0.95, result.stats.iterations, std::nullopt, result.stats.unshot_fraction);
@@ -205,7 +227,7 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
         // Its linear system is solved as far as this one's, so that the difference is the
         // mesh's, not the iteration's.
         check.system_tolerance_scale_ = options_.tolerance / coarse_tolerance;
-        const Result c = check.run_method(prepared, method);
+        const Result c = check.run_method(prepared, method, matrix_free);
         rays_ += check.rays_;
         if (!check.memory_stop_.empty()) stop_for_memory(check.memory_stop_);
         finished = c.status == SolveStatus::converged;
@@ -214,7 +236,7 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
             // The same mesh twice shows no error at all, whatever this mesh's is.
             const double discretisation = measured >= kMinCheckRatio
                                               ? richardson_estimate(method, result, c, measured)
-                                              : kUncheckedShare * options_.tolerance;
+                                              : unchecked;
             result.stats.error_parts.discretisation = discretisation;
             estimate = std::max(estimate, discretisation);
         }
@@ -301,9 +323,10 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
     result.stats.seconds = elapsed();
 }
 
-Result Pipeline::run_method(const PreparedSolve& prepared, const std::string& method) {
+Result Pipeline::run_method(const PreparedSolve& prepared, const std::string& method,
+                            bool matrix_free) {
     return method == "hierarchical" ? run_hierarchical(prepared)
-                                    : run_dense(prepared, method, false);
+                                    : run_dense(prepared, method, matrix_free);
 }
 
 SolveOptions Pipeline::options_within_deadline(double tolerance) const {
@@ -455,12 +478,13 @@ Result Pipeline::run() {
     Result solved = method == "hierarchical" ? run_hierarchical(prepared)
                                              : run_dense(prepared, method, matrix_free);
     record_stage("solving", solve_start, rays_, 0);
-    // Matrix-free shooting is for models too large to solve twice.
-    if (solved.status == SolveStatus::converged && !matrix_free) {
+    // Matrix-free shooting is for models too large to solve at a finer tolerance; the coarser
+    // mesh of the check costs it about a sixteenth of its own.
+    if (solved.status == SolveStatus::converged) {
         const Clock::time_point check_start = Clock::now();
         const std::uint64_t rays_before = rays_;
-        check_discretisation(prepared, method, solved);
-        refine_to_tolerance(prepared, method, solved);
+        check_discretisation(prepared, method, solved, matrix_free);
+        if (!matrix_free) refine_to_tolerance(prepared, method, solved);
         record_stage("checking", check_start, rays_ - rays_before, 0);
     }
     // The sensor sets' and light scenes' estimates derive from the floored one.
@@ -523,10 +547,6 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     const PreparedScene& prepared = solve_input.scene;
     const Visibility& visibility = *solve_input.visibility;
     const double patch_edge = target_patch_edge(solve_input.mean_free_path_m, options_.tolerance);
-    // Without a matrix the patches keep their target size, and only gaps narrower than an
-    // eighth of it cut them (the hierarchical roots' gap at this tolerance): every patch costs a
-    // factor in every shot, and the dense mesh's half-patch gap splits the floor along every
-    // piece of furniture (office-x64: 100 000 patches).
     // Memory: the patches and the matrix with the solver's own copy of it must fit; the patch
     // budget shrinks (patches grow) until they do.
     auto dense_bytes = [&](std::size_t patch_count) {
@@ -547,9 +567,7 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         max_patches -= std::max<std::size_t>(1, max_patches / 16);
         patches_cut = true;
     }
-    const MeshingOptions meshing = matrix_free
-                                       ? MeshingOptions{patch_edge, max_patches, 0.125 * patch_edge}
-                                       : MeshingOptions{patch_edge, max_patches};
+    const MeshingOptions meshing = dense_meshing(patch_edge, max_patches, matrix_free);
     // Counted before it is built: a piece is one patch at least, and the lines where other
     // surfaces touch it split it further, so the mesh can exceed max_patches.
     const std::size_t n = PatchMesh::count(prepared, meshing);
@@ -714,6 +732,10 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     if (options_.want_mesh) result.mesh = *mesh;
     finish_stats(result, std::string(solver ? solver->name() : method), n, outcome.iterations,
                  outcome.error_estimate, outcome.unshot_fraction, channels, stopped);
+    // Matrix-free shooting's bound is attained where its error is uniform (a closed room of one
+    // reflectance, see gather_sweep.h): what no bound measures, the floor's share of the
+    // tolerance, comes on top of it rather than under it.
+    if (matrix_free) result.stats.error_estimate += kDenseUnresolvedShare * options_.tolerance;
     final_mesh_ = mesh;
     final_mesh_version_ = 1;
     return result;

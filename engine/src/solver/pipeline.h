@@ -76,18 +76,21 @@ private:
     /// Adds the discretisation error to a converged result's estimate: Richardson's estimate
     /// from the same method at a coarser tolerance (see pipeline.cpp). The status stays: it says
     /// whether the solver met its tolerance on its mesh; a check that could not finish (time
-    /// limit, cancelled) makes the result `stopped`.
+    /// limit, cancelled) makes the result `stopped`. A mesh that does not coarsen counts
+    /// twice the tolerance, so that refinement measures it; `matrix_free` shooting, which is
+    /// not refined, then keeps its linear system's bound alone.
     void check_discretisation(const PreparedSolve& prepared, const std::string& method,
-                              Result& result);
+                              Result& result, bool matrix_free = false);
     /// While a converged result's estimate exceeds the tolerance, solves again at a smaller
     /// tolerance (errors shrink about in proportion) and estimates the finer result's error
     /// from the two solutions. The time limit or a cancel makes it `stopped`; where no finer
     /// mesh can be tried (limits_.max_refinement, the dense patch budget, the memory budget) the
     /// finest result is kept with its estimate above the tolerance; run() makes it `stopped`.
     void refine_to_tolerance(const PreparedSolve& prepared, std::string method, Result& result);
-    /// The hierarchical path, or the dense one with its matrix: what the check and refinement
-    /// solve again.
-    Result run_method(const PreparedSolve& prepared, const std::string& method);
+    /// The hierarchical path, or the dense one (with its matrix unless `matrix_free`): what the
+    /// check and refinement solve again.
+    Result run_method(const PreparedSolve& prepared, const std::string& method,
+                      bool matrix_free = false);
     /// This solve's options at another tolerance, with what is left of its time limit.
     SolveOptions options_within_deadline(double tolerance) const;
     struct DenseMeshSize {

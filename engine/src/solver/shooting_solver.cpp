@@ -2,11 +2,45 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "formfactor/transport.h"
 #include "parallel/fork_join.h"
+#include "solver/gather_sweep.h"
 
 namespace radiant {
+namespace {
+
+// Matrix-free shooting looks at its unshot light first when its bound is this many tolerances.
+constexpr double kFirstStep = 16;
+// A gather sweep costs as many rays as a shot of every patch: it is made only once the shots
+// have cost as much (so that it at most doubles the time), where the unshot light's signs
+// predict a bound this many times closer than the shots', and below this share of the
+// tolerance.
+constexpr double kWorthwhileCancellation = 1.5;
+constexpr double kSweepMargin = 0.8;
+
+// Σ A|u| / |Σ A u| of the unshot light u, the least over the channels: how many times the
+// shots' L1 bound exceeds what light of both signs, spread evenly, would leave.
+double sign_cancellation(const LinearSystem& s, const ShootingState& state) {
+    double least = std::numeric_limits<double>::infinity();
+    bool unshot = false;
+    for (int c = 0; c < s.channels; ++c) {
+        double absolute = 0, sum = 0;
+        const std::vector<double>& u = state.unshot[static_cast<std::size_t>(c)];
+        for (std::size_t i = 0; i < s.n; ++i) {
+            absolute += s.area_m2[i] * std::abs(u[i]);
+            sum += s.area_m2[i] * u[i];
+        }
+        if (absolute > 0) {
+            unshot = true;
+            least = std::min(least, sum != 0 ? absolute / std::abs(sum) : least);
+        }
+    }
+    return unshot ? least : 1.0;
+}
+
+}  // namespace
 
 double shooting_relaxation(const LinearSystem& s) {
     double area = 0, rho_area = 0;
@@ -23,23 +57,29 @@ double shooting_relaxation(const LinearSystem& s) {
 SolverOutcome progressive_shooting(const LinearSystem& s, const std::array<ContractionNorms, 3>& q,
                                    const ShooterColumn& shooter_column, std::size_t check_every,
                                    const std::vector<double>& seen, const SolverControl& control,
-                                   std::array<std::vector<double>, 3>* gathered) {
+                                   ShootingState& state, bool gather) {
     SolverOutcome out;
     const std::size_t n = s.n;
     const int channels = s.channels;
     const double omega = shooting_relaxation(s);
     check_every = std::max<std::size_t>(1, check_every);
 
-    std::array<std::vector<double>, 3> shot, unshot;  // B = shot + unshot
+    // Named references, not a structured binding: the estimate's lambda captures them.
+    auto& shot = state.shot;
+    auto& unshot = state.unshot;
+    auto& gathered = state.gathered;
     double total_area = 0, emitted = 0;
     for (std::size_t i = 0; i < n; ++i) total_area += s.area_m2[i];
     for (int c = 0; c < channels; ++c) {
         const auto ci = static_cast<std::size_t>(c);
-        shot[ci].assign(n, 0.0);
-        unshot[ci] = s.source[ci];
-        if (gathered) (*gathered)[ci].assign(n, 0.0);
+        if (unshot[ci].size() != n) {
+            shot[ci].assign(n, 0.0);
+            unshot[ci] = s.source[ci];
+            if (gather) gathered[ci].assign(n, 0.0);
+        }
         emitted = std::max(emitted, area_weighted_sum(s.source[ci], s.area_m2));
     }
+    out.iterations = state.shots;
 
     // Bound from the residual of B = shot + unshot, which is M·unshot.
     auto estimate = [&](double& unshot_fraction) {
@@ -121,19 +161,19 @@ SolverOutcome progressive_shooting(const LinearSystem& s, const std::array<Contr
             const auto& rho = s.reflectance[ci];
             auto& u = unshot[ci];
             for (std::size_t i = 0; i < n; ++i) u[i] += rho[i] * column[i] * delta;
-            if (gathered) {
-                auto& g = (*gathered)[ci];
+            if (gather) {
+                auto& g = gathered[ci];
                 for (std::size_t i = 0; i < n; ++i) g[i] += column[i] * delta;
             }
         }
         ++out.iterations;
     }
+    state.shots = out.iterations;
     for (int c = 0; c < channels; ++c) {
         const auto ci = static_cast<std::size_t>(c);
         out.radiosity[ci].resize(n);
         for (std::size_t i = 0; i < n; ++i)
             out.radiosity[ci][i] = std::max(0.0, shot[ci][i] + unshot[ci][i]);
-        out.unshot[ci] = std::move(unshot[ci]);
     }
     return out;
 }
@@ -157,8 +197,10 @@ SolverOutcome ShootingSolver::solve(const LinearSystem& s, const SolverControl& 
     std::array<ContractionNorms, 3> q;
     for (int c = 0; c < s.channels; ++c) q[static_cast<std::size_t>(c)] = contraction_norms(s, c);
     // The O(n) estimate is cheap next to a shot's O(n) update only every few shots.
+    ShootingState state;
     return progressive_shooting(
-        s, q, [&](std::size_t shooter) { return &ft[shooter * n]; }, n / 16, row_sum, control);
+        s, q, [&](std::size_t shooter) { return &ft[shooter * n]; }, n / 16, row_sum, control,
+        state);
 }
 
 ContractionNorms reciprocal_norms(const LinearSystem& s, int channel, double row_sum) {
@@ -194,7 +236,43 @@ SolverOutcome shoot_matrix_free(const LinearSystem& s, const Transport& transpor
     };
     // A shot computes a whole row of factors: the O(n) estimate costs nothing next to it. No
     // row sums are known before every patch has shot: snapshots take the scene as closed.
-    return progressive_shooting(s, q, shooter_column, 1, {}, control, &gathered);
+    // The shots go on in steps of √2 in their bound. After each step, a gather sweep (see
+    // gather_sweep.h) where the unshot light's signs predict that it meets the tolerance: its
+    // bound is about the shots' over their cancellation (exactly so on a closed sphere), times
+    // what the last sweep showed of that prediction.
+    ShootingState state;
+    double shots_to = kFirstStep * control.tolerance;
+    double realised = 1;  // the last sweep's cancellation over the one predicted for it
+    while (true) {
+        SolverControl shooting = control;
+        shooting.tolerance = shots_to;
+        SolverOutcome out =
+            progressive_shooting(s, q, shooter_column, 1, {}, shooting, state, true);
+        const double predicted = realised * sign_cancellation(s, state);
+        if (out.converged && state.shots >= s.n && predicted >= kWorthwhileCancellation &&
+            out.error_estimate / predicted <= kSweepMargin * control.tolerance) {
+            GatherSweep sweep = gather_sweep(s, transport, out.radiosity, control, out.iterations,
+                                             out.error_estimate, out.unshot_fraction, rays);
+            factors += sweep.factors;
+            if (sweep.complete && sweep.error_bound < out.error_estimate &&
+                sweep.error_bound <= control.tolerance) {
+                out.radiosity = std::move(sweep.radiosity);
+                gathered = std::move(sweep.gathered);
+                out.error_estimate = sweep.error_bound;
+                return out;
+            }
+            if (!sweep.complete) out.converged = false;
+            if (sweep.error_bound > 0)
+                realised *= out.error_estimate / sweep.error_bound / predicted;
+        }
+        // Stopped (deadline, cancellation) or met: the shots' radiosity, bound and light stand.
+        if (!out.converged || out.error_estimate <= control.tolerance) {
+            out.converged = out.converged && out.error_estimate <= control.tolerance;
+            gathered = std::move(state.gathered);
+            return out;
+        }
+        shots_to = std::max(control.tolerance, out.error_estimate / std::sqrt(2.0));
+    }
 }
 
 }  // namespace radiant

@@ -43,8 +43,6 @@ struct SolverControl {
 
 struct SolverOutcome {
     std::array<std::vector<double>, 3> radiosity;  ///< per channel, lm/m²
-    /// Radiosity received but not yet passed on (shooting); empty for other solvers.
-    std::array<std::vector<double>, 3> unshot;
     std::size_t iterations = 0;
     double error_estimate = 0;
     double unshot_fraction = 0;
