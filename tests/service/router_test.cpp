@@ -333,8 +333,13 @@ TEST_P(RouterTest, RunningResultIsAProgressSnapshot) {
     EXPECT_EQ(mesh["triangle_radiosity"].size(), mesh["triangles"].size());
     EXPECT_EQ(mesh["vertex_radiosity"].size(), mesh["vertices"].size());
 
-    // The store has the running job's progress within about a second.
-    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    // The store has the running job's progress within about a second (polled: on a loaded
+    // machine a store's write can take longer, and the full suite failed here now and then).
+    const auto persisted = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (s.store().find(id, false)->progress.sequence == 0 &&
+           std::chrono::steady_clock::now() < persisted) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
     EXPECT_GT(s.store().find(id, false)->progress.sequence, 0u);
 
     // Cancelled: the best result so far keeps its mesh.
