@@ -84,6 +84,10 @@ TEST(MatrixFreeShooting, FurnaceIsEOverOneMinusRho) {
     ASSERT_NE(box, nullptr);
     const double exact = 1.0 / (1.0 - rho);
     EXPECT_NEAR(box->average_radiosity / exact, 1.0, 0.01) << describe(r);
+    // Its error is uniform, which the gather sweep's bound attains (the shots' was 2.5 times it).
+    const double error = std::abs(box->average_radiosity / exact - 1.0);
+    EXPECT_GE(r.stats.error_estimate, error);
+    EXPECT_LE(r.stats.error_estimate, 1.5 * error + 0.01 * 0.01) << describe(r);
     // Irradiance H = (B − E)/ρ from the light gathered while shooting.
     EXPECT_NEAR(box->average_irradiance / (exact - 1.0) * rho, 1.0, 0.01) << describe(r);
 }
@@ -221,6 +225,21 @@ TEST(MatrixFreeShooting, TheSpheresEstimateIsItsErrorAndTheFloor) {
     EXPECT_GE(r.stats.error_estimate, error) << describe(r);
     EXPECT_LE(r.stats.error_estimate, 1.5 * error + 0.01 * tolerance)
         << describe(r) << ", error " << error;
+}
+
+// The gather sweep too: the furnace's solve ends with one.
+TEST(MatrixFreeShooting, TheSweepDoesNotDependOnThreads) {
+    SolveOptions options = shooting(0.03);
+    options.threads = 1;
+    const Result one = run(testing::furnace_cube(0.9), options, true);
+    options.threads = 2;
+    const Result two = run(testing::furnace_cube(0.9), options, true);
+    ASSERT_EQ(one.status, SolveStatus::converged) << describe(one);
+    EXPECT_EQ(one.stats.links, two.stats.links);
+    EXPECT_EQ(one.stats.error_estimate, two.stats.error_estimate);
+    ASSERT_EQ(one.surfaces.size(), two.surfaces.size());
+    EXPECT_EQ(one.surfaces[0].average_radiosity, two.surfaces[0].average_radiosity);
+    EXPECT_EQ(one.surfaces[0].average_irradiance, two.surfaces[0].average_irradiance);
 }
 
 TEST(MatrixFreeShooting, DoesNotDependOnThreads) {
