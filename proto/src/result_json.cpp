@@ -71,7 +71,8 @@ nlohmann::json stats_json(const SolveStats& s, const Rounding& round) {
               {"discretisation", round.estimate(e.discretisation)},
               {"gather_noise", round.estimate(e.gather_noise)},
               {"photon_noise", round.estimate(e.photon_noise)},
-              {"completion", round.estimate(e.completion)}}},
+              {"completion", round.estimate(e.completion)},
+              {"cross_check", round.estimate(e.cross_check)}}},
             {"stages", stages_json(s.stages, round)}};
 }
 

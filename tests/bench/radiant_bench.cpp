@@ -111,11 +111,10 @@ std::string stage_summary(const std::vector<StageStats>& stages) {
 // "residual 1.2e-05 · discretisation 0.0031 …": the estimate's non-zero parts, so that a row
 // shows which part decides it.
 std::string estimate_summary(const ErrorParts& parts) {
-    const std::pair<const char*, double> named[] = {{"residual", parts.residual},
-                                                    {"discretisation", parts.discretisation},
-                                                    {"gather noise", parts.gather_noise},
-                                                    {"photon noise", parts.photon_noise},
-                                                    {"completion", parts.completion}};
+    const std::pair<const char*, double> named[] = {
+        {"residual", parts.residual},         {"discretisation", parts.discretisation},
+        {"gather noise", parts.gather_noise}, {"photon noise", parts.photon_noise},
+        {"completion", parts.completion},     {"cross-check", parts.cross_check}};
     std::ostringstream out;
     out.precision(2);
     for (const auto& [name, value] : named) {

@@ -32,6 +32,9 @@ struct ErrorParts {
     double gather_noise = 0;    ///< the sensors' sampled rays and visibility
     double photon_noise = 0;    ///< the Monte Carlo light field's noise
     double completion = 0;      ///< light the links did not carry, restored by completion
+    /// In cluttered rooms: the radiosity answer's distance to a Monte Carlo solve plus that
+    /// solve's own estimate (Pipeline::cross_check)
+    double cross_check = 0;
 };
 
 /// Statistics every solver reports, so methods can be compared on the same scene.

@@ -81,6 +81,12 @@ private:
     /// not refined, then keeps its linear system's bound alone.
     void check_discretisation(const PreparedSolve& prepared, const std::string& method,
                               Result& result, bool matrix_free = false);
+    /// In a cluttered room (more than kMaxAutoHierarchicalPolygons convex polygons) solves the
+    /// scene by Monte Carlo too and bounds the result's error by their distance plus Monte
+    /// Carlo's estimate (stats.error_parts.cross_check): the estimate for `hierarchical`, which
+    /// can miss its error there, the smaller of it and the method's own for the others. The
+    /// status then says whether that estimate meets the tolerance (cross_check.cpp).
+    void cross_check(const PreparedSolve& prepared, Result& result);
     /// While a converged result's estimate exceeds the tolerance, solves again at a smaller
     /// tolerance (errors shrink about in proportion) and estimates the finer result's error
     /// from the two solutions. The time limit or a cancel makes it `stopped`; where no finer
