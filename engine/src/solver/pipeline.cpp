@@ -493,12 +493,16 @@ Result Pipeline::run() {
     }
     // Stage: cross-check — among clutter a radiosity method's own estimate cannot be taken on
     // trust (docs/accuracy.md, "Bookshelves").
-    if (cluttered && solved.status != SolveStatus::failed && !should_stop() &&
-        memory_stop_.empty()) {
-        const Clock::time_point cross_start = Clock::now();
-        const std::uint64_t rays_before = rays_;
-        cross_check(prepared, solved);
-        record_stage("cross-check", cross_start, rays_ - rays_before, 0);
+    if (cluttered && solved.status != SolveStatus::failed) {
+        if (!should_stop() && memory_stop_.empty()) {
+            const Clock::time_point cross_start = Clock::now();
+            const std::uint64_t rays_before = rays_;
+            cross_check(prepared, solved);
+            record_stage("cross-check", cross_start, rays_ - rays_before, 0);
+        } else if (method == "hierarchical") {
+            // Past the time limit, cancelled or out of memory: nothing vouches for its estimate.
+            solved.status = SolveStatus::stopped;
+        }
     }
     // The sensor sets' and light scenes' estimates derive from the floored one.
     floor_estimate(solved);
