@@ -1,6 +1,7 @@
 // The cross-check stage of the pipeline: a radiosity answer in a cluttered room measured against
 // a Monte Carlo solve of the same prepared scene.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "solution/result_difference.h"
@@ -67,11 +68,13 @@ void Pipeline::cross_check(const PreparedSolve& prepared, Result& result) {
         result.stats.seconds = elapsed();
         if (!check.memory_stop_.empty()) stop_for_memory(check.memory_stop_);
         // A Monte Carlo solve that stopped short of its tolerance still bounds its error by its
-        // estimate; one that failed leaves nothing to vouch for the answer's.
-        if (mc.status == SolveStatus::failed || !(mc.stats.error_estimate >= 0)) {
+        // estimate; one that failed, or stopped (time limit, cancel) before it had one, leaves
+        // nothing to vouch for the answer's.
+        if (mc.status == SolveStatus::failed || !std::isfinite(mc.stats.error_estimate)) {
             if (pass > 0) break;  // the first pass's bound stands
             result.status = SolveStatus::stopped;
-            result.stop_reason = "the Monte Carlo cross-check failed: " + mc.error;
+            if (!mc.error.empty())
+                result.stop_reason = "the Monte Carlo cross-check failed: " + mc.error;
             return;
         }
         const double distance = relative_rms_difference(unmaintained(mc, prepared.scene), result);
