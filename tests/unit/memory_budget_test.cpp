@@ -33,6 +33,22 @@ TEST(MemoryBudget, HoldsWhatFitsAndGivesItBack) {
     EXPECT_TRUE(unlimited.fits(std::size_t{1} << 60));
 }
 
+// A stage's memory is the most the budget held while it ran, above what it held before.
+TEST(MemoryBudget, PeakSinceARestart) {
+    MemoryBudget budget(0);
+    MemoryHold before(budget, 100);
+    EXPECT_EQ(budget.restart_peak(), 100u);
+    {
+        MemoryHold a(budget, 300);
+        a.resize(50);
+        MemoryHold b(budget, 200);
+    }
+    EXPECT_EQ(budget.held_bytes(), 100u);
+    EXPECT_EQ(budget.peak_bytes(), 400u);  // 100 + 300, more than 100 + 50 + 200
+    EXPECT_EQ(budget.restart_peak(), 100u);
+    EXPECT_EQ(budget.peak_bytes(), 100u);
+}
+
 // An 8 × 6 × 3 m office with ceiling panels, desks (boxes) and a grid of sensors on the floor.
 Scene office() {
     Scene scene;

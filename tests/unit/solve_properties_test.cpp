@@ -13,6 +13,7 @@
 
 #include "scene_builder.h"
 #include "scene_files.h"
+#include "solve_with.h"
 
 namespace radiant {
 namespace {
@@ -467,6 +468,39 @@ TEST(AutoMethod, WithoutSensorsMonteCarloBeyondAHundredPolygons) {
     const Result sparse = solve(scene, options);
     ASSERT_NE(sparse.status, SolveStatus::failed) << sparse.error;
     EXPECT_EQ(sparse.stats.method, "hierarchical");
+}
+
+// Every radiosity solve says where its time, rays and memory went, stage by stage: the stages
+// cover every ray, and the memory of the stage that builds the links or the matrix is what
+// they held.
+TEST(Stages, RadiosityPathsReportEachStage) {
+    const Scene scene = occluded_room();
+    const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+        {"hierarchical",
+         {"prepare", "checks", "meshing", "linking", "solving", "gather", "checking"}},
+        {"direct",
+         {"prepare", "checks", "meshing", "form factors", "solving", "gather", "checking"}},
+    };
+    for (const auto& [method, expected] : cases) {
+        const Result r = testing::solve_with(scene, method, 0.1);
+        ASSERT_EQ(r.status, SolveStatus::converged) << method << ": " << r.error;
+        std::vector<std::string> names;
+        std::uint64_t rays = 0;
+        double seconds = 0;
+        for (const StageStats& s : r.stats.stages) {
+            names.push_back(s.name);
+            rays += s.rays;
+            seconds += s.seconds;
+        }
+        EXPECT_EQ(names, expected) << method;
+        EXPECT_EQ(rays, r.stats.rays) << method;
+        EXPECT_LE(seconds, r.stats.seconds) << method;
+        const auto& links = r.stats.stages[3];
+        // The dense matrix is n² factors of 4 bytes at least; the hierarchy's links 16 bytes.
+        const std::size_t least =
+            method == "direct" ? r.stats.patches * r.stats.patches * 4 : r.stats.links * 16;
+        EXPECT_GE(links.memory_bytes, least) << method << ": " << links.name;
+    }
 }
 
 TEST(Cancellation, CancelFromFirstProgress) {

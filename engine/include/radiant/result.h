@@ -21,7 +21,7 @@ struct StageStats {
     std::string name;
     double seconds = 0;
     std::uint64_t rays = 0;
-    std::size_t memory_bytes = 0;  ///< what the stage's own data held at its end
+    std::size_t memory_bytes = 0;  ///< the most the stage's own data held (the memory ledger)
 };
 
 /// The error estimate's parts, each relative like the estimate; the estimate combines them.

@@ -64,8 +64,7 @@ void Pipeline::cross_check(const PreparedSolve& prepared, Result& result) {
     for (bool first = true;; first = false) {
         SolveOptions options = options_within_deadline(tolerance);
         options.want_mesh = false;
-        Pipeline check(scene_, options, nullptr, cancel_, limits_);
-        check.memory_ = memory_;
+        Pipeline check(*this, options);
         const Result mc = check.run_monte_carlo(prepared);
         rays_ += check.rays_;
         check_rays += static_cast<double>(check.rays_);

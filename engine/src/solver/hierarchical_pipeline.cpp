@@ -64,6 +64,9 @@ constexpr std::uint64_t kLeafMeshVersion = 3;
 }  // namespace
 
 Result Pipeline::run_hierarchical(const PreparedSolve& input) {
+    // Stage: meshing — the root patches, which of them are enclosed, and the element tree with
+    // the luminaires' light on it.
+    const StageStart meshing = begin_stage();
     Result result;
     result.scene = scene_.name;
     const PreparedScene& scene = input.scene;
@@ -131,6 +134,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
             kRootMeshVersion);
     }
 
+    end_stage("meshing", meshing);
+    // Stage: linking — which elements and clusters exchange light, and their form factors.
+    const StageStart linking = begin_stage();
     report("form factors", 0.05);
     RefinementCriteria criteria;
     // Relative to all the light leaving surfaces (emitted and reflected), as the solution's error.
@@ -209,7 +215,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
                         "of " +
                         mebibytes_text(memory_->limit_bytes()));
     }
+    end_stage("linking", linking);
 
+    // Stage: solving — the linked system, and its answer with each patch's factors completed.
+    const StageStart solving = begin_stage();
     HierarchicalSystem system(tree, linked.links, enclosed, front_share, channels);
     // Sensors gather down the tree from the current radiosity, opening nodes that could add more
     // than a share of the tolerance × the mean irradiance (`coarsening` times that for previews),
@@ -279,6 +288,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     if (outcome.converged) other = system.patchwise_completed(control, criteria.receiver_weight);
     const auto mesh =
         std::make_shared<const SolvedMesh>(leaf_mesh(tree, roots, channels, scene.world_origin));
+    end_stage("solving", solving);
+    // Stage: gather — the sensors' light down the tree, from both answers.
+    const StageStart gather = begin_stage();
     // The radiosity is final from here on; the heartbeat shows it while the sensors gather.
     snapshots_.offer(mesh, kLeafMeshVersion);
     report("sensors", 0.9, outcome.iterations);
@@ -350,6 +362,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
             {error_estimate, kCompletionMargin * difference, sensor_rms_of(result, one_signed)});
     }
     if (options_.want_mesh) result.mesh = *mesh;
+    end_stage("gather", gather);
     finish_stats(result, "hierarchical", roots.size(), outcome.iterations, error_estimate, 0,
                  channels, stopped);
     // What the links lost or carried unevenly, apart from the iteration's residual.

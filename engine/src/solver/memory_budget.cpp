@@ -27,10 +27,21 @@ MemoryHold& MemoryHold::operator=(MemoryHold&& other) noexcept {
     return *this;
 }
 
+std::size_t MemoryBudget::restart_peak() {
+    const std::size_t held = held_bytes();
+    peak_.store(held, std::memory_order_relaxed);
+    return held;
+}
+
 void MemoryHold::resize(std::size_t bytes) {
     if (!budget_) return;
     if (bytes >= bytes_) {
-        budget_->held_.fetch_add(bytes - bytes_, std::memory_order_relaxed);
+        const std::size_t held =
+            budget_->held_.fetch_add(bytes - bytes_, std::memory_order_relaxed) + bytes - bytes_;
+        std::size_t peak = budget_->peak_.load(std::memory_order_relaxed);
+        while (peak < held &&
+               !budget_->peak_.compare_exchange_weak(peak, held, std::memory_order_relaxed)) {
+        }
     } else {
         budget_->held_.fetch_sub(bytes_ - bytes, std::memory_order_relaxed);
     }

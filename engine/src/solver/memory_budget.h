@@ -30,11 +30,16 @@ public:
     }
     /// "about 350 MiB for <step>, with 120 MiB held, do not fit the memory budget of 200 MiB".
     std::string refusal(const std::string& step, std::size_t needed_bytes) const;
+    /// The most held since the last restart_peak (or since the budget was made).
+    std::size_t peak_bytes() const { return peak_.load(std::memory_order_relaxed); }
+    /// Starts measuring the peak afresh from what is held now, which it returns.
+    std::size_t restart_peak();
 
 private:
     friend class MemoryHold;
     const std::size_t limit_;
     std::atomic<std::size_t> held_{0};
+    std::atomic<std::size_t> peak_{0};
 };
 
 /// Bytes held in a budget for as long as this lives; movable, resizable.

@@ -163,6 +163,24 @@ Pipeline::Pipeline(const Scene& scene, const SolveOptions& options, SolveObserve
     }
 }
 
+Pipeline::Pipeline(const Pipeline& parent, const SolveOptions& options)
+    : Pipeline(parent.scene_, options, nullptr, parent.cancel_, parent.limits_) {
+    memory_ = parent.memory_;
+    nested_ = true;
+}
+
+Pipeline::StageStart Pipeline::begin_stage() {
+    // A nested solve leaves the peak to its parent's stage.
+    return {Clock::now(), rays_, nested_ ? 0 : memory_->restart_peak()};
+}
+
+void Pipeline::end_stage(const std::string& name, const StageStart& start) {
+    if (nested_) return;
+    const std::size_t peak = memory_->peak_bytes();
+    stages_.push_back({name, seconds_since(start.time), rays_ - start.rays,
+                       peak > start.held_bytes ? peak - start.held_bytes : 0});
+}
+
 void Pipeline::report(const std::string& stage, double fraction, std::size_t iterations,
                       std::optional<double> estimate, double unshot) const {
     if (!observer_) return;
@@ -227,8 +245,7 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
     bool finished = !should_stop();
     double estimate = result.stats.error_estimate;
     if (finished) {
-        Pipeline check(scene_, coarse, nullptr, cancel_, limits_);
-        check.memory_ = memory_;
+        Pipeline check(*this, coarse);
         // Its linear system is solved as far as this one's, so that the difference is the
         // mesh's, not the iteration's.
         check.system_tolerance_scale_ = options_.tolerance / coarse_tolerance;
@@ -288,8 +305,7 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
         }
         report("refining", 0.95, result.stats.iterations, result.stats.error_estimate,
                result.stats.unshot_fraction);
-        Pipeline refined(scene_, finer, nullptr, cancel_, limits_);
-        refined.memory_ = memory_;
+        Pipeline refined(*this, finer);
         Result f = refined.run_method(prepared, method);
         if (!refined.memory_stop_.empty()) stop_for_memory(refined.memory_stop_);
         // A finer solve's own estimate need only meet the asked tolerance, not its own; it is
@@ -392,7 +408,7 @@ Result Pipeline::run() {
     result.scene = scene_.name;
 
     report("meshing", 0.0);
-    const Clock::time_point prepare_start = Clock::now();
+    const StageStart prepare_start = begin_stage();
     // The scene counts in the budget (the caller holds it while it is solved), and so does its
     // preparation; a budget they do not fit fails the solve before anything is allocated.
     const std::size_t input_bytes = scene_bytes(scene_);
@@ -452,17 +468,17 @@ Result Pipeline::run() {
                                                prepared.triangle_piece, options_.seed);
     if (method == "auto" && prefers_hierarchy(dense_mesh_size(prepared, options_.tolerance)))
         method = "hierarchical";
-    record_stage("prepare", prepare_start, 0, 0);
+    end_stage("prepare", prepare_start);
     // Stage: checks — what looks like a modelling mistake, on the ray tracer just built and
     // before any solving work, so that a strict solve refuses at once.
-    const Clock::time_point checks_start = Clock::now();
+    const StageStart checks_start = begin_stage();
     std::uint64_t check_rays = 0;
     std::vector<Warning> warnings =
         modelling_warnings({scene_, prepared.scene, *prepared.visibility, triangles,
                             prepared.triangle_piece, options_.seed},
                            check_rays);
     rays_ += check_rays;
-    record_stage("checks", checks_start, check_rays, 0);
+    end_stage("checks", checks_start);
     if (observer_ && !warnings.empty()) observer_->on_warnings(warnings);
     if (options_.strict && !warnings.empty()) {
         result.error = "strict: the scene has warnings: " + describe_warnings(warnings);
@@ -478,10 +494,8 @@ Result Pipeline::run() {
         solved.warnings = std::move(warnings);
         return solved;
     }
-    const Clock::time_point solve_start = Clock::now();
     Result solved = method == "hierarchical" ? run_hierarchical(prepared)
                                              : run_dense(prepared, method, matrix_free);
-    record_stage("solving", solve_start, rays_, 0);
     // In a cluttered room the cross-check below replaces the hierarchical solver's estimate, so
     // its mesh check and refinement would be spent for nothing (the furnished office at 0.1:
     // 26 s of 53).
@@ -489,20 +503,18 @@ Result Pipeline::run() {
     // Matrix-free shooting is for models too large to solve at a finer tolerance; the coarser
     // mesh of the check costs it about a sixteenth of its own.
     if (solved.status == SolveStatus::converged && !(cluttered && method == "hierarchical")) {
-        const Clock::time_point check_start = Clock::now();
-        const std::uint64_t rays_before = rays_;
+        const StageStart check_start = begin_stage();
         check_discretisation(prepared, method, solved, matrix_free);
         if (!matrix_free) refine_to_tolerance(prepared, method, solved);
-        record_stage("checking", check_start, rays_ - rays_before, 0);
+        end_stage("checking", check_start);
     }
     // Stage: cross-check — among clutter a radiosity method's own estimate cannot be taken on
     // trust (docs/accuracy.md, "Bookshelves").
     if (cluttered && solved.status != SolveStatus::failed) {
         if (!should_stop() && memory_stop_.empty()) {
-            const Clock::time_point cross_start = Clock::now();
-            const std::uint64_t rays_before = rays_;
+            const StageStart cross_start = begin_stage();
             cross_check(prepared, solved);
-            record_stage("cross-check", cross_start, rays_ - rays_before, 0);
+            end_stage("cross-check", cross_start);
         } else if (method == "hierarchical") {
             // Past the time limit, cancelled or out of memory: nothing vouches for its estimate.
             solved.status = SolveStatus::stopped;
@@ -563,6 +575,8 @@ void Pipeline::finish(Result& solved) {
 
 Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& requested,
                            bool matrix_free) {
+    // Stage: meshing — the patches.
+    const StageStart meshing_start = begin_stage();
     Result result;
     result.scene = scene_.name;
     const PreparedScene& prepared = solve_input.scene;
@@ -603,6 +617,9 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     if (patches_cut && patches.target_edge_m() > patch_edge) {
         stop_for_memory(memory_->refusal("the patches the tolerance asks for", wanted_bytes));
     }
+    end_stage("meshing", meshing_start);
+    // Stage: form factors — the matrix (without one, the luminaires' light only).
+    const StageStart factors_start = begin_stage();
     const MemoryHold dense_hold(*memory_, dense_bytes(n));
     const int channels = prepared.channels;
 
@@ -660,6 +677,9 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     elements_ = n;
     links_ = static_cast<std::size_t>(
         std::count_if(form_factors.begin(), form_factors.end(), [](float f) { return f > 0; }));
+    end_stage("form factors", factors_start);
+    // Stage: solving — the linear system (matrix-free shooting computes its factors here).
+    const StageStart solving = begin_stage();
 
     LinearSystem system;
     system.n = n;
@@ -741,6 +761,9 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     }
 
     const auto mesh = display_mesh(outcome.radiosity);
+    end_stage("solving", solving);
+    // Stage: gather — the sensors' light from the solved patches.
+    const StageStart gather = begin_stage();
     // The radiosity is final from here on; the heartbeat shows it while the sensors gather.
     snapshots_.offer(mesh, 1);
     report("sensors", 0.9, outcome.iterations, std::nullopt, outcome.unshot_fraction);
@@ -751,6 +774,7 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     result.stats.emitted_flux_lm = summary.emitted_flux_lm;
     result.stats.absorbed_flux_lm = summary.absorbed_flux_lm;
     if (options_.want_mesh) result.mesh = *mesh;
+    end_stage("gather", gather);
     finish_stats(result, std::string(solver ? solver->name() : method), n, outcome.iterations,
                  outcome.error_estimate, outcome.unshot_fraction, channels, stopped);
     // Matrix-free shooting's bound is attained where its error is uniform (a closed room of one

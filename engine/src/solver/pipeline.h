@@ -50,6 +50,11 @@ public:
     Result run();
 
 private:
+    /// A solve of the same scene at other `options` within `parent` (its discretisation check, a
+    /// refinement, the cross-check): it shares the parent's memory budget, cancel and limits,
+    /// and reports no stages of its own — it is part of the parent's stage that runs it.
+    Pipeline(const Pipeline& parent, const SolveOptions& options);
+
     /// Patch mesh and one of the matrix solvers, or (`matrix_free`) shooting with each shooter's
     /// factors computed when it shoots.
     Result run_dense(const PreparedSolve& prepared, const std::string& method, bool matrix_free);
@@ -68,11 +73,17 @@ private:
     static double seconds_since(Clock::time_point t) {
         return std::chrono::duration<double>(Clock::now() - t).count();
     }
-    /// Adds a stage that began at `begin` and ends now to the result's stage statistics.
-    void record_stage(const std::string& name, Clock::time_point begin, std::uint64_t rays,
-                      std::size_t memory_bytes) {
-        stages_.push_back({name, seconds_since(begin), rays, memory_bytes});
-    }
+    /// Where a stage began: the time, the rays cast and the memory held then.
+    struct StageStart {
+        Clock::time_point time;
+        std::uint64_t rays = 0;
+        std::size_t held_bytes = 0;
+    };
+    StageStart begin_stage();
+    /// Adds the stage begun at `start` and ending now to the result's stage statistics: its
+    /// seconds, rays, and the most memory its data held (the budget's peak above what was held
+    /// when it began).
+    void end_stage(const std::string& name, const StageStart& start);
     /// Adds the discretisation error to a converged result's estimate: Richardson's estimate
     /// from the same method at a coarser tolerance (see pipeline.cpp). The status stays: it says
     /// whether the solver met its tolerance on its mesh; a check that could not finish (time
@@ -141,6 +152,8 @@ private:
     std::optional<Clock::time_point> deadline_;
     std::uint64_t rays_ = 0;
     std::vector<StageStats> stages_;
+    /// A check or refinement inside another solve (see the nested constructor).
+    bool nested_ = false;
     mutable Progress last_progress_;
     /// Mutable like last_progress_: report() is const and hands it every progress.
     mutable SnapshotPublisher snapshots_;
