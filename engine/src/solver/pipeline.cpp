@@ -215,28 +215,25 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
     // Matrix-free shooting is never refined: where no coarser mesh measures its mesh's error, it
     // reports the bound of its linear system alone.
     const double unchecked = matrix_free ? 0.0 : kUncheckedShare * options_.tolerance;
-    if (!(ratio >= kMinCheckRatio)) {
-        // No coarser solve to measure by (tolerances above kMaxCheckTolerance / kMinCheckRatio):
-        // as for a mesh that cannot coarsen, a finer solve measures the error instead.
-        result.stats.error_parts.discretisation = unchecked;
-        result.stats.error_estimate = std::max(result.stats.error_estimate, unchecked);
-        return;
-    }
-    // A mesh made of the model's own polygons, split where other surfaces touch them, may not
-    // coarsen: that is known before solving it again (dense shooting on office-x4 at 0.3 spent
-    // 145 s on a coarse mesh of 6 707 patches, against its own 6 521).
-    if (method != "hierarchical") {
+    // No coarser solve to measure by — tolerances above kMaxCheckTolerance / kMinCheckRatio, or
+    // a dense mesh made of the model's own polygons, split where other surfaces touch them,
+    // which may not coarsen (known before solving it again: dense shooting on office-x4 at 0.3
+    // spent 145 s on a coarse mesh of 6 707 patches, against its own 6 521): as for a mesh that
+    // does not coarsen, a finer solve measures the error instead.
+    bool coarsens = ratio >= kMinCheckRatio;
+    if (coarsens && method != "hierarchical") {
         const double edge = target_patch_edge(prepared.mean_free_path_m, coarse_tolerance);
         const std::size_t coarse_patches = PatchMesh::count(
             prepared.scene,
             dense_meshing(edge, matrix_free ? kMaxMatrixFreePatches : kMaxDensePatches,
                           matrix_free));
-        if (!(static_cast<double>(result.stats.patches) >=
-              kMinCheckRatio * static_cast<double>(coarse_patches))) {
-            result.stats.error_parts.discretisation = unchecked;
-            result.stats.error_estimate = std::max(result.stats.error_estimate, unchecked);
-            return;
-        }
+        coarsens = static_cast<double>(result.stats.patches) >=
+                   kMinCheckRatio * static_cast<double>(coarse_patches);
+    }
+    if (!coarsens) {
+        result.stats.error_parts.discretisation = unchecked;
+        result.stats.error_estimate = std::max(result.stats.error_estimate, unchecked);
+        return;
     }
     // Not yet the answer's estimate: the mesh's part comes from this check.
     report("checking", 0.95, result.stats.iterations, std::nullopt, result.stats.unshot_fraction);
