@@ -7,6 +7,7 @@
 
 #include "formfactor/quadrature.h"
 #include "geometry/polygon_split.h"
+#include "parallel/fork_join.h"
 
 namespace radiant {
 namespace {
@@ -181,28 +182,46 @@ double clipped_length(const Segment& s, const Poly& p, const Vec3& n) {
     return (t1 - t0) * length(d);
 }
 
+// Whether a plane (through o, normal m) has vertices of p further than eps on both sides: the
+// only case in which split_by_plane splits p.
+bool straddles(const Poly& p, const Vec3& o, const Vec3& m, double eps) {
+    bool pos = false, neg = false;
+    for (const Vec3& v : p) {
+        const double d = dot(v - o, m);
+        pos |= d > eps;
+        neg |= d < -eps;
+    }
+    return pos && neg;
+}
+
 void split_along(std::vector<Poly>& patches, const Segment& s, const Vec3& n, double eps) {
     const Vec3 dir = s.b - s.a;
     if (length(dir) <= eps) return;
     const Vec3 m = normalized(cross(n, dir));
+    // Most contacts split nothing (a mesh's neighbouring triangles touch along its own edges):
+    // the list is rebuilt only from the first polygon that splits.
     std::vector<Poly> result;
-    result.reserve(patches.size() + 4);
-    for (Poly& p : patches) {
-        if (clipped_length(s, p, n) <= eps) {
-            result.push_back(std::move(p));
-            continue;
+    bool split = false;
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+        Poly& p = patches[i];
+        if (straddles(p, s.a, m, eps) && clipped_length(s, p, n) > eps) {
+            auto [pos, neg] = split_by_plane(p, s.a, m, eps);
+            const double min_area = eps * eps;
+            if (pos.size() >= 3 && neg.size() >= 3 && polygon_area(pos) > min_area &&
+                polygon_area(neg) > min_area) {
+                if (!split) {
+                    result.reserve(patches.size() + 4);
+                    for (std::size_t j = 0; j < i; ++j) result.push_back(std::move(patches[j]));
+                    split = true;
+                }
+                result.push_back(simplify_polygon(pos, 0.0));
+                result.push_back(simplify_polygon(neg, 0.0));
+                continue;
+            }
         }
-        auto [pos, neg] = split_by_plane(p, s.a, m, eps);
-        const double min_area = eps * eps;
-        if (pos.size() >= 3 && neg.size() >= 3 && polygon_area(pos) > min_area &&
-            polygon_area(neg) > min_area) {
-            result.push_back(simplify_polygon(pos, 0.0));
-            result.push_back(simplify_polygon(neg, 0.0));
-        } else {
-            result.push_back(std::move(p));
-        }
+        if (split) result.push_back(std::move(p));
     }
-    patches = std::move(result);
+    if (split) patches = std::move(result);
 }
 
 // Piece q overlays piece r when it lies in r's plane, faces the same way and is smaller (equal
@@ -225,46 +244,45 @@ bool inside_convex(const Vec3& x, const Poly& p, const Vec3& n, double eps) {
     return true;
 }
 
-struct Contacts {
-    std::vector<std::vector<Segment>> segments;  // per piece: lines to split it along
-    std::vector<std::vector<int>> overlays;      // per piece: pieces lying on it
+// Every pair of pieces whose boxes (padded by `pad`) overlap: per piece, its partners in the
+// order of a sweep along x (their boxes' lower x), which keeps the pairs near-linear for
+// spread-out scenes. The order is the order in which contacts split a piece, so it is fixed.
+// Piece i's partners are partner[first[i]] … partner[first[i + 1] − 1] (a plant of 2 000
+// triangles has most of its 4 million pairs: one array, counted before it is filled).
+struct Partners {
+    std::vector<std::size_t> first;
+    std::vector<int> partner;
 };
 
-Contacts all_contacts(const PreparedScene& scene, double eps, double near) {
+Partners overlapping_pieces(const PreparedScene& scene, double pad) {
     const std::size_t k = scene.pieces.size();
     std::vector<Box3> box(k);
-    for (std::size_t i = 0; i < k; ++i)
-        box[i] = bounds(scene.pieces[i].vertices, std::max(eps, near));
-    // Sweep along x so that the candidate pairs stay near-linear for spread-out scenes.
+    for (std::size_t i = 0; i < k; ++i) box[i] = bounds(scene.pieces[i].vertices, pad);
     std::vector<std::size_t> order(k);
     for (std::size_t i = 0; i < k; ++i) order[i] = i;
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return box[a].lo.x < box[b].lo.x; });
-    Contacts contacts;
-    contacts.segments.resize(k);
-    contacts.overlays.resize(k);
-    for (std::size_t oi = 0; oi < k; ++oi) {
-        const std::size_t i = order[oi];
-        for (std::size_t oj = oi + 1; oj < k && box[order[oj]].lo.x <= box[i].hi.x; ++oj) {
-            const std::size_t j = order[oj];
-            if (!overlap(box[i], box[j])) continue;
-            const Piece& a = scene.pieces[i];
-            const Piece& b = scene.pieces[j];
-            contact_segments(a, b, eps, contacts.segments[i]);
-            contact_segments(b, a, eps, contacts.segments[j]);
-            parallel_outline(a, b, near, contacts.segments[i]);
-            parallel_outline(b, a, near, contacts.segments[j]);
-            if (overlays(b, j, a, i, eps)) contacts.overlays[i].push_back(static_cast<int>(j));
-            if (overlays(a, i, b, j, eps)) contacts.overlays[j].push_back(static_cast<int>(i));
+    auto sweep = [&](auto&& pair) {
+        for (std::size_t oi = 0; oi < k; ++oi) {
+            const std::size_t i = order[oi];
+            for (std::size_t oj = oi + 1; oj < k && box[order[oj]].lo.x <= box[i].hi.x; ++oj) {
+                if (overlap(box[i], box[order[oj]])) pair(i, order[oj]);
+            }
         }
-    }
-    return contacts;
-}
-
-std::vector<std::vector<Poly>> subdivide_all(const PreparedScene& scene, double h) {
-    std::vector<std::vector<Poly>> out(scene.pieces.size());
-    for (std::size_t i = 0; i < scene.pieces.size(); ++i)
-        subdivide_piece(scene.pieces[i], h, out[i]);
+    };
+    Partners out;
+    out.first.assign(k + 1, 0);
+    sweep([&](std::size_t i, std::size_t j) {
+        ++out.first[i + 1];
+        ++out.first[j + 1];
+    });
+    for (std::size_t i = 0; i < k; ++i) out.first[i + 1] += out.first[i];
+    out.partner.resize(out.first[k]);
+    std::vector<std::size_t> next(out.first.begin(), out.first.end() - 1);
+    sweep([&](std::size_t i, std::size_t j) {
+        out.partner[next[i]++] = static_cast<int>(j);
+        out.partner[next[j]++] = static_cast<int>(i);
+    });
     return out;
 }
 
@@ -286,35 +304,6 @@ double polygon_diameter(const Poly& p) {
     return d;
 }
 
-// The patches' polygons of every piece: subdivided to the target edge (grown until the count fits
-// max_patches), then split along the lines where other surfaces touch the piece. Sets `h` to the
-// edge used.
-struct PatchPlan {
-    std::vector<std::vector<Poly>> polygons;  ///< per piece
-    Contacts contacts;
-};
-
-PatchPlan plan_patches(const PreparedScene& scene, const MeshingOptions& options, double eps,
-                       double& h) {
-    h = options.target_edge_m;
-    PatchPlan plan;
-    std::vector<std::vector<Poly>>& sub = plan.polygons;
-    sub = subdivide_all(scene, h);
-    for (int round = 0; round < 20 && count_patches(scene, sub) > options.max_patches; ++round) {
-        const double ratio = static_cast<double>(count_patches(scene, sub)) /
-                             static_cast<double>(options.max_patches);
-        h *= std::max(1.05, std::sqrt(ratio) * 1.02);
-        sub = subdivide_all(scene, h);
-    }
-    const double gap = options.shading_gap_m > 0 ? options.shading_gap_m : 0.5 * h;
-    plan.contacts = all_contacts(scene, eps, gap);
-    for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
-        for (const Segment& s : plan.contacts.segments[i])
-            split_along(sub[i], s, scene.pieces[i].normal, eps);
-    }
-    return plan;
-}
-
 double mesh_epsilon(const PreparedScene& scene) {
     return 1e-7 * std::max(scene.diagonal_m, 1e-300);
 }
@@ -326,25 +315,65 @@ double target_patch_edge(double mean_free_path_m, double tolerance) {
     return std::max(1.5 * mean_free_path_m * std::sqrt(tol), 1e-9);
 }
 
-std::size_t PatchMesh::count(const PreparedScene& scene, const MeshingOptions& options) {
-    double h = 0;
-    return count_patches(scene, plan_patches(scene, options, mesh_epsilon(scene), h).polygons);
+PatchPlan::PatchPlan(const PreparedScene& scene, const MeshingOptions& options)
+    : target_edge_m_(options.target_edge_m), epsilon_(mesh_epsilon(scene)) {
+    const std::size_t k = scene.pieces.size();
+    auto subdivide_all = [&] {
+        polygons_.assign(k, {});
+        parallel_for(0, k, [&](std::size_t i) {
+            subdivide_piece(scene.pieces[i], target_edge_m_, polygons_[i]);
+        });
+    };
+    // Grown until the count fits max_patches.
+    subdivide_all();
+    for (int round = 0; round < 20 && count_patches(scene, polygons_) > options.max_patches;
+         ++round) {
+        const double ratio = static_cast<double>(count_patches(scene, polygons_)) /
+                             static_cast<double>(options.max_patches);
+        target_edge_m_ *= std::max(1.05, std::sqrt(ratio) * 1.02);
+        subdivide_all();
+    }
+    // Then split along the lines where other pieces touch each piece, partner by partner.
+    const double gap = options.shading_gap_m > 0 ? options.shading_gap_m : 0.5 * target_edge_m_;
+    const Partners partners = overlapping_pieces(scene, std::max(epsilon_, gap));
+    overlays_.assign(k, {});
+    parallel_for(0, k, [&](std::size_t i) {
+        const Piece& r = scene.pieces[i];
+        std::vector<Segment> segments;
+        for (std::size_t at = partners.first[i]; at < partners.first[i + 1]; ++at) {
+            const int j = partners.partner[at];
+            const Piece& q = scene.pieces[static_cast<std::size_t>(j)];
+            contact_segments(r, q, epsilon_, segments);
+            parallel_outline(r, q, gap, segments);
+            if (overlays(q, static_cast<std::size_t>(j), r, i, epsilon_)) overlays_[i].push_back(j);
+        }
+        for (const Segment& s : segments) split_along(polygons_[i], s, r.normal, epsilon_);
+    });
+    count_ = count_patches(scene, polygons_);
 }
 
-PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) {
-    const double eps = mesh_epsilon(scene);
-    double h = 0;
-    PatchPlan plan = plan_patches(scene, options, eps, h);
-    target_edge_m_ = h;
-    std::vector<std::vector<Poly>>& sub = plan.polygons;
-    const Contacts& contacts = plan.contacts;
-    VertexIndex index;
+PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options)
+    : PatchMesh(scene, PatchPlan(scene, options)) {}
+
+PatchMesh::PatchMesh(const PreparedScene& scene, PatchPlan plan)
+    : target_edge_m_(plan.target_edge_m()) {
+    // Patches in order of piece, side, polygon; their geometry is made in parallel, the mesh's
+    // faces (which share vertices) one after the other.
+    std::vector<std::size_t> first(scene.pieces.size() + 1, 0);
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
+        const bool two_sided =
+            scene.materials[static_cast<std::size_t>(scene.pieces[i].material)].two_sided;
+        first[i + 1] = first[i] + plan.polygons_[i].size() * (two_sided ? 2 : 1);
+    }
+    patches_.resize(first.back());
+    const double eps = plan.epsilon_;
+    parallel_for(0, scene.pieces.size(), [&](std::size_t i) {
         const Piece& piece = scene.pieces[i];
         const bool two_sided = scene.materials[static_cast<std::size_t>(piece.material)].two_sided;
+        std::size_t at = first[i];
         for (int side = 0; side < (two_sided ? 2 : 1); ++side) {
-            for (const Poly& p : sub[i]) {
-                PatchGeometry g;
+            for (const Poly& p : plan.polygons_[i]) {
+                PatchGeometry& g = patches_[at++];
                 g.vertices = p;
                 if (side == 1) std::reverse(g.vertices.begin(), g.vertices.end());
                 g.normal = side == 1 ? -piece.normal : piece.normal;
@@ -355,16 +384,16 @@ PatchMesh::PatchMesh(const PreparedScene& scene, const MeshingOptions& options) 
                 g.surface = piece.surface;
                 g.material = piece.material;
                 g.back_side = side == 1;
-                for (const int q : contacts.overlays[i]) {
+                for (const int q : plan.overlays_[i]) {
                     const Piece& over = scene.pieces[static_cast<std::size_t>(q)];
                     g.hidden =
                         g.hidden || inside_convex(g.centroid, over.vertices, over.normal, eps);
                 }
-                add_face(g, index);
-                patches_.push_back(std::move(g));
             }
         }
-    }
+    });
+    VertexIndex index;
+    for (const PatchGeometry& g : patches_) add_face(g, index);
     for (int c = 0; c < 3; ++c) {
         mesh_.add_property(radiosity_[c]);
         mesh_.add_property(unshot_[c]);

@@ -51,12 +51,28 @@ struct MeshingOptions {
 /// free path ℓ of light between surfaces, and face means converge as O(h²), so h ∝ ℓ·√tol.
 double target_patch_edge(double mean_free_path_m, double tolerance);
 
+/// The polygons of the patches a PatchMesh is made of, planned but not made: about a tenth of
+/// the mesh's memory, so that their count can be held against a budget before the mesh is made.
+class PatchPlan {
+public:
+    PatchPlan(const PreparedScene& scene, const MeshingOptions& options);
+    std::size_t count() const { return count_; }
+    /// The target edge, grown from the options' until the patches fit max_patches.
+    double target_edge_m() const { return target_edge_m_; }
+
+private:
+    friend class PatchMesh;
+    std::vector<std::vector<std::vector<Vec3>>> polygons_;  ///< per piece
+    std::vector<std::vector<int>> overlays_;  ///< per piece: the smaller coplanar pieces on it
+    double target_edge_m_;
+    double epsilon_;
+    std::size_t count_ = 0;
+};
+
 class PatchMesh {
 public:
     PatchMesh(const PreparedScene& scene, const MeshingOptions& options);
-    /// The patches PatchMesh(scene, options) would make, without making them: it holds their
-    /// polygons for a while (a tenth of the mesh), not the mesh.
-    static std::size_t count(const PreparedScene& scene, const MeshingOptions& options);
+    PatchMesh(const PreparedScene& scene, PatchPlan plan);
 
     std::size_t size() const { return patches_.size(); }
     const PatchGeometry& patch(std::size_t i) const { return patches_[i]; }

@@ -80,7 +80,8 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
                                       0.5 * kMinEdgeFactor * patch_edge};
     // Memory: the roots and the first tree must fit, or the solve fails before building them;
     // refinement then splits elements and makes links only while they fit.
-    const std::size_t root_count = PatchMesh::count(scene, root_options);
+    PatchPlan root_plan(scene, root_options);
+    const std::size_t root_count = root_plan.count();
     const std::size_t first_bytes =
         root_count * (kRootPatchBytes + kFirstTreeBytesPerRoot + kLaterBytesPerElement);
     if (!memory_->fits(first_bytes)) {
@@ -94,7 +95,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     }
     MemoryHold roots_hold(*memory_, root_count * kRootPatchBytes);
     MemoryHold tree_hold(*memory_, first_bytes - roots_hold.bytes());
-    const PatchMesh roots(scene, root_options);
+    const PatchMesh roots(scene, std::move(root_plan));
     const std::vector<char> enclosed =
         enclosed_patches(scene, roots, visibility, input.triangle_piece, options_.seed);
     const std::vector<double> front_share = front_shares(

@@ -223,10 +223,11 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
     bool coarsens = ratio >= kMinCheckRatio;
     if (coarsens && method != "hierarchical") {
         const double edge = target_patch_edge(prepared.mean_free_path_m, coarse_tolerance);
-        const std::size_t coarse_patches = PatchMesh::count(
-            prepared.scene,
-            dense_meshing(edge, matrix_free ? kMaxMatrixFreePatches : kMaxDensePatches,
-                          matrix_free));
+        const std::size_t coarse_patches =
+            PatchPlan(prepared.scene,
+                      dense_meshing(edge, matrix_free ? kMaxMatrixFreePatches : kMaxDensePatches,
+                                    matrix_free))
+                .count();
         coarsens = static_cast<double>(result.stats.patches) >=
                    kMinCheckRatio * static_cast<double>(coarse_patches);
     }
@@ -602,7 +603,8 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     const MeshingOptions meshing = dense_meshing(patch_edge, max_patches, matrix_free);
     // Counted before it is built: a piece is one patch at least, and the lines where other
     // surfaces touch it split it further, so the mesh can exceed max_patches.
-    const std::size_t n = PatchMesh::count(prepared, meshing);
+    PatchPlan plan(prepared, meshing);
+    const std::size_t n = plan.count();
     if (!memory_->fits(dense_bytes(n))) {
         const std::string refusal =
             memory_->refusal(std::to_string(n) + " patches and their form factors", dense_bytes(n));
@@ -610,7 +612,7 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         result.error = "memory budget: " + refusal;
         return result;
     }
-    PatchMesh patches(prepared, meshing);
+    PatchMesh patches(prepared, std::move(plan));
     if (patches_cut && patches.target_edge_m() > patch_edge) {
         stop_for_memory(memory_->refusal("the patches the tolerance asks for", wanted_bytes));
     }
