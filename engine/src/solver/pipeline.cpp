@@ -362,8 +362,8 @@ bool Pipeline::prefers_hierarchy(const DenseMeshSize& size) const {
 
 Pipeline::DenseMeshSize Pipeline::dense_mesh_size(const PreparedSolve& prepared, double tolerance) {
     const double edge = target_patch_edge(prepared.mean_free_path_m, tolerance);
-    const PatchMesh mesh(prepared.scene, {edge, kMaxDensePatches});
-    return {mesh.size(), mesh.target_edge_m() <= edge};
+    const PatchPlan plan(prepared.scene, {edge, kMaxDensePatches});
+    return {plan.count(), plan.target_edge_m() <= edge};
 }
 
 SolverControl Pipeline::solving_control(double tolerance) const {
