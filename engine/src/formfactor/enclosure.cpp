@@ -18,7 +18,8 @@ constexpr double kParallelCosine = 0.99;
 }  // namespace
 
 double mean_free_path(const PreparedScene& scene, const Visibility& visibility,
-                      std::span<const int> triangle_piece, std::uint64_t seed, int rays) {
+                      std::span<const int> triangle_piece, std::uint64_t seed, std::uint64_t& cast,
+                      int rays) {
     if (scene.pieces.empty() || !(scene.total_area_m2 > 0)) return scene.diagonal_m;
     std::vector<double> cdf;
     double total = 0;
@@ -38,6 +39,7 @@ double mean_free_path(const PreparedScene& scene, const Visibility& visibility,
         const Vec3 x = stratified_points(p.vertices, 1, u)[0] + p.normal * eps;
         const Vec3 dir = cosine_direction(p.normal, rng.next(), rng.next());
         const RayHit hit = visibility.intersect(x, dir, reach);
+        ++cast;
         if (hit.triangle < 0) continue;
         const auto tri = static_cast<std::size_t>(hit.triangle);
         if (tri < triangle_piece.size()) {
@@ -122,7 +124,8 @@ HemisphereSurvey survey_hemisphere(const PreparedScene& scene, const PatchMesh& 
 std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& patches,
                                    const Visibility& visibility,
                                    std::span<const int> triangle_piece, std::uint64_t seed,
-                                   int min_rays_per_patch, int min_rays_per_piece) {
+                                   std::uint64_t& cast, int min_rays_per_patch,
+                                   int min_rays_per_piece) {
     std::vector<int> piece_patches(scene.pieces.size(), 0);
     for (std::size_t i = 0; i < patches.size(); ++i)
         ++piece_patches[static_cast<std::size_t>(patches.patch(i).piece)];
@@ -137,8 +140,10 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
             survey_hemisphere(scene, patches, visibility, triangle_piece, seed, i, rays, true);
     });
     std::vector<char> piece_open(scene.pieces.size(), 0);
-    for (std::size_t i = 0; i < patches.size(); ++i)
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+        cast += static_cast<std::uint64_t>(found[i].cast);
         if (found[i].escaped > 0) piece_open[static_cast<std::size_t>(patches.patch(i).piece)] = 1;
+    }
     std::vector<char> enclosed(patches.size(), 0);
     for (std::size_t i = 0; i < patches.size(); ++i) {
         enclosed[i] = found[i].escaped == 0 && found[i].backs == 0 &&
@@ -150,19 +155,22 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
 std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& patches,
                                  const Visibility& visibility, std::span<const int> triangle_piece,
                                  std::uint64_t seed, std::span<const char> enclosed, double wanted,
-                                 int rays_per_patch, std::size_t max_rays) {
+                                 std::uint64_t& cast, int rays_per_patch, std::size_t max_rays) {
     std::vector<double> share(patches.size(), 1.0);
     const auto open = static_cast<std::size_t>(std::count(enclosed.begin(), enclosed.end(), 0));
     if (open == 0) return share;
     const int rays = std::max(
         kMinFrontShareRays,
         static_cast<int>(std::min(static_cast<std::size_t>(rays_per_patch), max_rays / open)));
+    std::vector<int> cast_from(patches.size(), 0);
     parallel_for(0, patches.size(), [&](std::size_t i) {
         if (enclosed[i]) return;
         const HemisphereSurvey s = survey_hemisphere(scene, patches, visibility, triangle_piece,
                                                      seed, i, rays, false, wanted / 2);
         share[i] = 1 - static_cast<double>(s.escaped + s.backs) / s.cast;
+        cast_from[i] = s.cast;
     });
+    for (const int c : cast_from) cast += static_cast<std::uint64_t>(c);
     return share;
 }
 

@@ -20,11 +20,12 @@ namespace radiant {
 /// over a share F of it goes unnoticed only when F is well under 1/min_rays_per_piece. That
 /// matters: an enclosed patch's factors are completed to sum to 1, so an opening taken for a
 /// wall would add its F to all the patch receives. `triangle_piece` maps the visibility's
-/// triangles to pieces. Deterministic in `seed`.
+/// triangles to pieces. Deterministic in `seed`. Adds the rays it casts to `cast`.
 std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& patches,
                                    const Visibility& visibility,
                                    std::span<const int> triangle_piece, std::uint64_t seed,
-                                   int min_rays_per_patch = 16, int min_rays_per_piece = 256);
+                                   std::uint64_t& cast, int min_rays_per_patch = 16,
+                                   int min_rays_per_piece = 256);
 
 /// Fewest rays front_shares casts from a patch, whatever its budget.
 constexpr int kMinFrontShareRays = 256;
@@ -34,11 +35,13 @@ constexpr int kMinFrontShareRays = 256;
 /// kMinFrontShareRays, when all would exceed `max_rays`); 1 where `enclosed`. It is what a
 /// patch's factors should sum to: the hierarchical solver completes those that see an opening
 /// or a back to it. A share found to be well under `wanted` after a first 64 rays (a patch
-/// inside furniture, under a box) is left at that rough estimate.
+/// inside furniture, under a box) is left at that rough estimate. Adds the rays it casts to
+/// `cast`.
 std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& patches,
                                  const Visibility& visibility, std::span<const int> triangle_piece,
                                  std::uint64_t seed, std::span<const char> enclosed, double wanted,
-                                 int rays_per_patch = 1024, std::size_t max_rays = 1u << 23);
+                                 std::uint64_t& cast, int rays_per_patch = 1024,
+                                 std::size_t max_rays = 1u << 23);
 
 /// Mean distance (m) from the surfaces to the next surface along cosine-distributed rays:
 /// the mean free path of light between bounces, over which radiosity varies. It equals 4V/S in
@@ -48,8 +51,10 @@ std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& pa
 /// emitter 1 mm above a floor): light there travels almost nothing, yet radiosity over the gap
 /// is as smooth as what the gap sees, except in a strip along its edges that refinement
 /// resolves; counting them would shrink every patch of the scene to the gap's width.
-/// `triangle_piece` maps the visibility's triangles to pieces. Deterministic in `seed`.
+/// `triangle_piece` maps the visibility's triangles to pieces. Deterministic in `seed`. Adds the
+/// rays it casts to `cast`.
 double mean_free_path(const PreparedScene& scene, const Visibility& visibility,
-                      std::span<const int> triangle_piece, std::uint64_t seed, int rays = 4096);
+                      std::span<const int> triangle_piece, std::uint64_t seed, std::uint64_t& cast,
+                      int rays = 4096);
 
 }  // namespace radiant

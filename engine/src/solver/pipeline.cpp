@@ -463,7 +463,7 @@ Result Pipeline::run() {
     std::vector<Triangle>().swap(triangles);  // Embree holds its own copy
     preparation_hold.resize(preparation_held_bytes(scene_));
     prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility,
-                                               prepared.triangle_piece, options_.seed);
+                                               prepared.triangle_piece, options_.seed, rays_);
     if (method == "auto" && prefers_hierarchy(dense_mesh_size(prepared, options_.tolerance)))
         method = "hierarchical";
     end_stage("prepare", prepare_start);
@@ -625,9 +625,9 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     const OcclusionCulling culling(prepared);
     TransportOptions transport_options;
     transport_options.seed = options_.seed;
-    const Transport transport(
-        prepared, patches, visibility, culling, transport_options,
-        enclosed_patches(prepared, patches, visibility, solve_input.triangle_piece, options_.seed));
+    const Transport transport(prepared, patches, visibility, culling, transport_options,
+                              enclosed_patches(prepared, patches, visibility,
+                                               solve_input.triangle_piece, options_.seed, rays_));
 
     auto display_mesh = [&](const std::array<std::vector<double>, 3>& v) {
         std::vector<double> display(n);
