@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
+#include <vector>
 
 #include "radiant/solve.h"
 #include "scene_builder.h"
@@ -126,6 +128,34 @@ TEST(MemoryBudget, RefinementThatWouldNotFitStopsWithTheBestAnswerSoFar) {
         EXPECT_FALSE(r.sensors.empty());
         for (const SensorResult& s : r.sensors)
             for (const double e : s.illuminance) EXPECT_TRUE(e > 0) << s.name;
+    }
+}
+
+// Triangles that cross each other cut each other's patches along every crossing: a few hundred
+// in a small ball would be cut into millions of slivers (and a mesh instanced on itself pairs
+// every triangle with every other). Planning the patches stops once its polygons and pairs
+// would exceed the budget, and the solve fails saying so, instead of holding gigabytes first.
+TEST(MemoryBudget, PiecesThatWouldCutEachOtherIntoSliversAreRefusedWhileBeingPlanned) {
+    Scene scene = office();
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> at(-0.15, 0.15);
+    for (int i = 0; i < 600; ++i) {
+        std::vector<Vec3> triangle;
+        for (int v = 0; v < 3; ++v)
+            triangle.push_back(Vec3{4 + at(rng), 3 + at(rng), 1.5 + at(rng)});
+        scene.surfaces.push_back(
+            testing::polygon_surface("shard-" + std::to_string(i), "desk", triangle));
+    }
+    for (const char* method : {"hierarchical", "shooting"}) {
+        SCOPED_TRACE(method);
+        SolveOptions options;
+        options.method = method;
+        options.tolerance = 0.1;
+        options.max_memory_bytes = std::size_t{48} << 20;
+        const Result r = solve(scene, options);
+        EXPECT_EQ(r.status, SolveStatus::failed);
+        EXPECT_EQ(r.error.rfind("memory budget: ", 0), 0u) << r.error;
+        EXPECT_NE(r.error.find("planning"), std::string::npos) << r.error;
     }
 }
 

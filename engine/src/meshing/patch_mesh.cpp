@@ -1,8 +1,11 @@
 #include "meshing/patch_mesh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include "formfactor/quadrature.h"
@@ -254,7 +257,12 @@ struct Partners {
     std::vector<int> partner;
 };
 
-Partners overlapping_pieces(const PreparedScene& scene, double pad) {
+// Each lists the other.
+constexpr std::size_t kPairBytes = 2 * sizeof(int);
+
+// The partners, or nothing when there are more than max_pairs pairs (counted no further).
+std::optional<Partners> overlapping_pieces(const PreparedScene& scene, double pad,
+                                           std::size_t max_pairs) {
     const std::size_t k = scene.pieces.size();
     std::vector<Box3> box(k);
     for (std::size_t i = 0; i < k; ++i) box[i] = bounds(scene.pieces[i].vertices, pad);
@@ -262,28 +270,42 @@ Partners overlapping_pieces(const PreparedScene& scene, double pad) {
     for (std::size_t i = 0; i < k; ++i) order[i] = i;
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return box[a].lo.x < box[b].lo.x; });
+    // pair(i, j) for every overlapping pair while it returns true.
     auto sweep = [&](auto&& pair) {
         for (std::size_t oi = 0; oi < k; ++oi) {
             const std::size_t i = order[oi];
             for (std::size_t oj = oi + 1; oj < k && box[order[oj]].lo.x <= box[i].hi.x; ++oj) {
-                if (overlap(box[i], box[order[oj]])) pair(i, order[oj]);
+                if (overlap(box[i], box[order[oj]]) && !pair(i, order[oj])) return;
             }
         }
     };
     Partners out;
     out.first.assign(k + 1, 0);
+    std::size_t pairs = 0;
     sweep([&](std::size_t i, std::size_t j) {
         ++out.first[i + 1];
         ++out.first[j + 1];
+        return ++pairs <= max_pairs;
     });
+    if (pairs > max_pairs) return std::nullopt;
     for (std::size_t i = 0; i < k; ++i) out.first[i + 1] += out.first[i];
     out.partner.resize(out.first[k]);
     std::vector<std::size_t> next(out.first.begin(), out.first.end() - 1);
     sweep([&](std::size_t i, std::size_t j) {
         out.partner[next[i]++] = static_cast<int>(j);
         out.partner[next[j]++] = static_cast<int>(i);
+        return true;
     });
     return out;
+}
+
+// What a planned polygon holds: its vector and about four vertices.
+constexpr std::size_t kPolygonBytes = sizeof(std::vector<Vec3>) + 4 * sizeof(Vec3);
+
+std::size_t polygon_count(const std::vector<std::vector<Poly>>& polygons) {
+    std::size_t n = 0;
+    for (const std::vector<Poly>& p : polygons) n += p.size();
+    return n;
 }
 
 std::size_t count_patches(const PreparedScene& scene, const std::vector<std::vector<Poly>>& sub) {
@@ -333,22 +355,54 @@ PatchPlan::PatchPlan(const PreparedScene& scene, const MeshingOptions& options)
         target_edge_m_ *= std::max(1.05, std::sqrt(ratio) * 1.02);
         subdivide_all();
     }
-    // Then split along the lines where other pieces touch each piece, partner by partner.
+    count_ = count_patches(scene, polygons_);
+    // Then split along the lines where other pieces touch each piece, partner by partner, while
+    // the pairs and polygons fit max_plan_bytes (instances of one mesh laid on each other pair
+    // every triangle with every other, and cut each other's pieces into as many slivers).
+    const std::size_t max_bytes = options.max_plan_bytes > 0
+                                      ? options.max_plan_bytes
+                                      : std::numeric_limits<std::size_t>::max();
+    const std::size_t subdivided_bytes = polygon_count(polygons_) * kPolygonBytes;
+    if (subdivided_bytes > max_bytes) {
+        least_bytes_ = subdivided_bytes;
+        return;
+    }
     const double gap = options.shading_gap_m > 0 ? options.shading_gap_m : 0.5 * target_edge_m_;
-    const Partners partners = overlapping_pieces(scene, std::max(epsilon_, gap));
+    const std::size_t max_pairs = (max_bytes - subdivided_bytes) / kPairBytes;
+    const std::optional<Partners> partners =
+        overlapping_pieces(scene, std::max(epsilon_, gap), max_pairs);
+    if (!partners) {
+        least_bytes_ = subdivided_bytes + (max_pairs + 1) * kPairBytes;
+        return;
+    }
+    const std::size_t pair_bytes = partners->partner.size() / 2 * kPairBytes;
+    std::atomic<std::size_t> polygons{polygon_count(polygons_)};
+    std::atomic<bool> over{false};
     overlays_.assign(k, {});
     parallel_for(0, k, [&](std::size_t i) {
         const Piece& r = scene.pieces[i];
         std::vector<Segment> segments;
-        for (std::size_t at = partners.first[i]; at < partners.first[i + 1]; ++at) {
-            const int j = partners.partner[at];
+        for (std::size_t at = partners->first[i]; at < partners->first[i + 1]; ++at) {
+            const int j = partners->partner[at];
             const Piece& q = scene.pieces[static_cast<std::size_t>(j)];
             contact_segments(r, q, epsilon_, segments);
             parallel_outline(r, q, gap, segments);
             if (overlays(q, static_cast<std::size_t>(j), r, i, epsilon_)) overlays_[i].push_back(j);
         }
-        for (const Segment& s : segments) split_along(polygons_[i], s, r.normal, epsilon_);
+        for (const Segment& s : segments) {
+            if (over.load(std::memory_order_relaxed)) return;
+            const std::size_t before = polygons_[i].size();
+            split_along(polygons_[i], s, r.normal, epsilon_);
+            if (polygons_[i].size() == before) continue;  // most contacts split nothing
+            const std::size_t now = polygons += polygons_[i].size() - before;
+            if (now * kPolygonBytes + pair_bytes > max_bytes) over = true;
+        }
     });
+    if (over) {
+        // Which thread went over first, and by how much, varies: the answer must not.
+        least_bytes_ = max_bytes + 1;
+        return;
+    }
     count_ = count_patches(scene, polygons_);
 }
 

@@ -45,6 +45,9 @@ struct MeshingOptions {
     /// their refinement cannot resolve, and a gap growing with the patch costs quadratic time
     /// and memory (every parallel piece within it).
     double shading_gap_m = 0;
+    /// The plan may hold at most this (its polygons and the pairs of pieces that may touch);
+    /// 0: no limit. A plan that would hold more stops there, `exceeded`.
+    std::size_t max_plan_bytes = 0;
 };
 
 /// Target patch edge from the scene's scale and the tolerance: radiosity varies over the mean
@@ -56,7 +59,12 @@ double target_patch_edge(double mean_free_path_m, double tolerance);
 class PatchPlan {
 public:
     PatchPlan(const PreparedScene& scene, const MeshingOptions& options);
+    /// The patches planned (fewer than a whole plan's when it was exceeded).
     std::size_t count() const { return count_; }
+    /// Whether planning stopped at the options' max_plan_bytes, and what it would have held at
+    /// least (0 when it did not stop): no mesh may be made from such a plan.
+    bool exceeded() const { return least_bytes_ > 0; }
+    std::size_t least_bytes() const { return least_bytes_; }
     /// The target edge, grown from the options' until the patches fit max_patches.
     double target_edge_m() const { return target_edge_m_; }
 
@@ -67,6 +75,7 @@ private:
     double target_edge_m_;
     double epsilon_;
     std::size_t count_ = 0;
+    std::size_t least_bytes_ = 0;
 };
 
 class PatchMesh {

@@ -77,10 +77,20 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     // Only gaps narrower than the smallest element must cut the roots: wider ones are resolved
     // by refinement, as the dense path resolves those wider than half its patch.
     const MeshingOptions root_options{kRootEdgeFactor * patch_edge, kMaxRootPatches,
-                                      0.5 * kMinEdgeFactor * patch_edge};
-    // Memory: the roots and the first tree must fit, or the solve fails before building them;
-    // refinement then splits elements and makes links only while they fit.
+                                      0.5 * kMinEdgeFactor * patch_edge,
+                                      memory_->available_bytes()};
+    // Memory: the plan of the roots, then the roots and the first tree must fit, or the solve
+    // fails before building them; refinement then splits elements and makes links only while
+    // they fit.
     PatchPlan root_plan(scene, root_options);
+    if (root_plan.exceeded()) {
+        const std::string refusal = memory_->refusal(
+            "planning the hierarchical solver's root patches (the pieces' contacts cut them)",
+            root_plan.least_bytes());
+        stop_for_memory(refusal);
+        result.error = "memory budget: " + refusal;
+        return result;
+    }
     const std::size_t root_count = root_plan.count();
     const std::size_t first_bytes =
         root_count * (kRootPatchBytes + kFirstTreeBytesPerRoot + kLaterBytesPerElement);

@@ -223,11 +223,11 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
     bool coarsens = ratio >= kMinCheckRatio;
     if (coarsens && method != "hierarchical") {
         const double edge = target_patch_edge(prepared.mean_free_path_m, coarse_tolerance);
-        const std::size_t coarse_patches =
-            PatchPlan(prepared.scene,
-                      dense_meshing(edge, matrix_free ? kMaxMatrixFreePatches : kMaxDensePatches,
-                                    matrix_free))
-                .count();
+        MeshingOptions meshing = dense_meshing(
+            edge, matrix_free ? kMaxMatrixFreePatches : kMaxDensePatches, matrix_free);
+        meshing.max_plan_bytes = memory_->available_bytes();
+        // A plan that does not fit counts fewer: the check then refuses for memory itself.
+        const std::size_t coarse_patches = PatchPlan(prepared.scene, meshing).count();
         coarsens = static_cast<double>(result.stats.patches) >=
                    kMinCheckRatio * static_cast<double>(coarse_patches);
     }
@@ -290,7 +290,8 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
         // hierarchical solver, the others with the finest mesh that fits, once.
         bool switched = false;
         if (method != "hierarchical") {
-            const DenseMeshSize size = dense_mesh_size(prepared, finer.tolerance);
+            const DenseMeshSize size =
+                dense_mesh_size(prepared, finer.tolerance, memory_->available_bytes());
             if (!size.fits && options_.method == "auto") {
                 method = "hierarchical";
                 switched = true;
@@ -360,10 +361,11 @@ bool Pipeline::prefers_hierarchy(const DenseMeshSize& size) const {
            options_.tolerance >= kMinAutoHierarchicalTolerance;
 }
 
-Pipeline::DenseMeshSize Pipeline::dense_mesh_size(const PreparedSolve& prepared, double tolerance) {
+Pipeline::DenseMeshSize Pipeline::dense_mesh_size(const PreparedSolve& prepared, double tolerance,
+                                                  std::size_t max_plan_bytes) {
     const double edge = target_patch_edge(prepared.mean_free_path_m, tolerance);
-    const PatchPlan plan(prepared.scene, {edge, kMaxDensePatches});
-    return {plan.count(), plan.target_edge_m() <= edge};
+    const PatchPlan plan(prepared.scene, {edge, kMaxDensePatches, 0, max_plan_bytes});
+    return {plan.count(), !plan.exceeded() && plan.target_edge_m() <= edge};
 }
 
 SolverControl Pipeline::solving_control(double tolerance) const {
@@ -464,7 +466,8 @@ Result Pipeline::run() {
     preparation_hold.resize(preparation_held_bytes(scene_));
     prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility,
                                                prepared.triangle_piece, options_.seed, rays_);
-    if (method == "auto" && prefers_hierarchy(dense_mesh_size(prepared, options_.tolerance)))
+    if (method == "auto" && prefers_hierarchy(dense_mesh_size(prepared, options_.tolerance,
+                                                              memory_->available_bytes())))
         method = "hierarchical";
     end_stage("prepare", prepare_start);
     // Stage: checks — what looks like a modelling mistake, on the ray tracer just built and
@@ -600,10 +603,18 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         max_patches -= std::max<std::size_t>(1, max_patches / 16);
         patches_cut = true;
     }
-    const MeshingOptions meshing = dense_meshing(patch_edge, max_patches, matrix_free);
+    MeshingOptions meshing = dense_meshing(patch_edge, max_patches, matrix_free);
+    meshing.max_plan_bytes = memory_->available_bytes();
     // Counted before it is built: a piece is one patch at least, and the lines where other
     // surfaces touch it split it further, so the mesh can exceed max_patches.
     PatchPlan plan(prepared, meshing);
+    if (plan.exceeded()) {
+        const std::string refusal = memory_->refusal(
+            "planning the patches (the pieces' contacts cut them)", plan.least_bytes());
+        stop_for_memory(refusal);
+        result.error = "memory budget: " + refusal;
+        return result;
+    }
     const std::size_t n = plan.count();
     if (!memory_->fits(dense_bytes(n))) {
         const std::string refusal =

@@ -114,8 +114,10 @@ private:
         std::size_t patches = 0;
         bool fits = true;  ///< false: the patch size had to grow to fit the patch budget
     };
-    /// The dense path's mesh at `tolerance`.
-    static DenseMeshSize dense_mesh_size(const PreparedSolve& prepared, double tolerance);
+    /// The dense path's mesh at `tolerance` (one whose plan would hold more than
+    /// `max_plan_bytes` does not fit).
+    static DenseMeshSize dense_mesh_size(const PreparedSolve& prepared, double tolerance,
+                                         std::size_t max_plan_bytes);
     /// Whether `auto` solves a scene of few polygons hierarchically after all: its dense mesh
     /// would be `size`, too large, and the asked tolerance is one the hierarchy can meet.
     bool prefers_hierarchy(const DenseMeshSize& size) const;
