@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -219,6 +220,22 @@ inline double mean_radiosity_of(const Result& r, const std::string& prefix) {
         area += s.area_m2;
     }
     return area > 0 ? sum / area : 0;
+}
+
+/// `count` random triangles ("shard-0", …) inside a cube of edge `size` about `centre`, crossing
+/// each other: a radiosity mesh cuts each along every crossing (600 in 0.3 m make 1.65 million
+/// slivers). Deterministic in `seed`.
+inline std::vector<Surface> crossing_shards(int count, Vec3 centre, double size,
+                                            const std::string& material, unsigned seed = 7) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> at(-size / 2, size / 2);
+    std::vector<Surface> shards;
+    for (int i = 0; i < count; ++i) {
+        Polygon triangle;
+        for (int v = 0; v < 3; ++v) triangle.push_back(centre + Vec3{at(rng), at(rng), at(rng)});
+        shards.push_back(polygon_surface("shard-" + std::to_string(i), material, triangle));
+    }
+    return shards;
 }
 
 /// Area-weighted mean radiosity over all surfaces of a result.

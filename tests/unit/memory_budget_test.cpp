@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <random>
 #include <string>
 #include <vector>
 
@@ -137,15 +136,8 @@ TEST(MemoryBudget, RefinementThatWouldNotFitStopsWithTheBestAnswerSoFar) {
 // would exceed the budget, and the solve fails saying so, instead of holding gigabytes first.
 TEST(MemoryBudget, PiecesThatWouldCutEachOtherIntoSliversAreRefusedWhileBeingPlanned) {
     Scene scene = office();
-    std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> at(-0.15, 0.15);
-    for (int i = 0; i < 600; ++i) {
-        std::vector<Vec3> triangle;
-        for (int v = 0; v < 3; ++v)
-            triangle.push_back(Vec3{4 + at(rng), 3 + at(rng), 1.5 + at(rng)});
-        scene.surfaces.push_back(
-            testing::polygon_surface("shard-" + std::to_string(i), "desk", triangle));
-    }
+    for (Surface& shard : testing::crossing_shards(600, {4, 3, 1.5}, 0.3, "desk"))
+        scene.surfaces.push_back(std::move(shard));
     for (const char* method : {"hierarchical", "shooting"}) {
         SCOPED_TRACE(method);
         SolveOptions options;
@@ -157,6 +149,25 @@ TEST(MemoryBudget, PiecesThatWouldCutEachOtherIntoSliversAreRefusedWhileBeingPla
         EXPECT_EQ(r.error.rfind("memory budget: ", 0), 0u) << r.error;
         EXPECT_NE(r.error.find("planning"), std::string::npos) << r.error;
     }
+}
+
+// A cancel (or the time limit) while they are being cut leaves the rest of the contacts uncut:
+// a coarser mesh at once, and the solve stops with what it has instead of cutting on for
+// seconds. Within 3 GiB the whole plan would fit, and its 1.65 million root patches would not.
+TEST(MemoryBudget, ACancelWhileCrossingPiecesAreCutStopsCuttingThem) {
+    Scene scene = office();
+    for (Surface& shard : testing::crossing_shards(600, {4, 3, 1.5}, 0.3, "desk"))
+        scene.surfaces.push_back(std::move(shard));
+    SolveOptions options;
+    options.method = "hierarchical";
+    options.tolerance = 0.1;
+    options.max_memory_bytes = std::size_t{3} << 30;
+    CancellationToken cancelled;
+    cancelled.cancel();
+    const Result r = solve(scene, options, nullptr, &cancelled);
+    EXPECT_EQ(r.status, SolveStatus::stopped) << r.error;
+    EXPECT_EQ(r.stop_reason, "cancelled");
+    EXPECT_LT(r.stats.patches, std::size_t{100000});
 }
 
 // A cylindrical sensor point keeps every emitting piece (no one tangent plane cuts the light

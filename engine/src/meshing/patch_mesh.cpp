@@ -377,9 +377,12 @@ PatchPlan::PatchPlan(const PreparedScene& scene, const MeshingOptions& options)
     }
     const std::size_t pair_bytes = partners->partner.size() / 2 * kPairBytes;
     std::atomic<std::size_t> polygons{polygon_count(polygons_)};
-    std::atomic<bool> over{false};
+    std::atomic<bool> over{false}, stop{false};
+    // Asked every this many contacts (a piece cut into many slivers takes long).
+    constexpr std::size_t kStopCheckEvery = 64;
     overlays_.assign(k, {});
     parallel_for(0, k, [&](std::size_t i) {
+        if (over.load(std::memory_order_relaxed)) return;
         const Piece& r = scene.pieces[i];
         std::vector<Segment> segments;
         for (std::size_t at = partners->first[i]; at < partners->first[i + 1]; ++at) {
@@ -389,10 +392,13 @@ PatchPlan::PatchPlan(const PreparedScene& scene, const MeshingOptions& options)
             parallel_outline(r, q, gap, segments);
             if (overlays(q, static_cast<std::size_t>(j), r, i, epsilon_)) overlays_[i].push_back(j);
         }
-        for (const Segment& s : segments) {
-            if (over.load(std::memory_order_relaxed)) return;
+        for (std::size_t n = 0; n < segments.size(); ++n) {
+            if (n % kStopCheckEvery == 0 && options.should_stop && options.should_stop())
+                stop = true;
+            if (stop.load(std::memory_order_relaxed) || over.load(std::memory_order_relaxed))
+                return;
             const std::size_t before = polygons_[i].size();
-            split_along(polygons_[i], s, r.normal, epsilon_);
+            split_along(polygons_[i], segments[n], r.normal, epsilon_);
             if (polygons_[i].size() == before) continue;  // most contacts split nothing
             const std::size_t now = polygons += polygons_[i].size() - before;
             if (now * kPolygonBytes + pair_bytes > max_bytes) over = true;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -48,6 +49,10 @@ struct MeshingOptions {
     /// The plan may hold at most this (its polygons and the pairs of pieces that may touch);
     /// 0: no limit. A plan that would hold more stops there, `exceeded`.
     std::size_t max_plan_bytes = 0;
+    /// Asked now and then while the pieces are cut; once it is true (a time limit, a cancel), the
+    /// rest of the contacts no longer cut them: a coarser plan, made at once, for a solve that
+    /// stops with what it has.
+    std::function<bool()> should_stop = nullptr;
 };
 
 /// Target patch edge from the scene's scale and the tolerance: radiosity varies over the mean

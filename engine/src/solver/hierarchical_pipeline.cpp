@@ -77,21 +77,14 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     // Only gaps narrower than the smallest element must cut the roots: wider ones are resolved
     // by refinement, as the dense path resolves those wider than half its patch.
     const MeshingOptions root_options{kRootEdgeFactor * patch_edge, kMaxRootPatches,
-                                      0.5 * kMinEdgeFactor * patch_edge,
-                                      memory_->available_bytes()};
+                                      0.5 * kMinEdgeFactor * patch_edge};
     // Memory: the plan of the roots, then the roots and the first tree must fit, or the solve
     // fails before building them; refinement then splits elements and makes links only while
     // they fit.
-    PatchPlan root_plan(scene, root_options);
-    if (root_plan.exceeded()) {
-        const std::string refusal = memory_->refusal(
-            "planning the hierarchical solver's root patches (the pieces' contacts cut them)",
-            root_plan.least_bytes());
-        stop_for_memory(refusal);
-        result.error = "memory budget: " + refusal;
-        return result;
-    }
-    const std::size_t root_count = root_plan.count();
+    std::optional<PatchPlan> root_plan =
+        plan_within_limits(scene, root_options, "the hierarchical solver's root patches", result);
+    if (!root_plan) return result;
+    const std::size_t root_count = root_plan->count();
     const std::size_t first_bytes =
         root_count * (kRootPatchBytes + kFirstTreeBytesPerRoot + kLaterBytesPerElement);
     if (!memory_->fits(first_bytes)) {
@@ -105,7 +98,7 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     }
     MemoryHold roots_hold(*memory_, root_count * kRootPatchBytes);
     MemoryHold tree_hold(*memory_, first_bytes - roots_hold.bytes());
-    const PatchMesh roots(scene, std::move(root_plan));
+    const PatchMesh roots(scene, std::move(*root_plan));
     const std::vector<char> enclosed =
         enclosed_patches(scene, roots, visibility, input.triangle_piece, options_.seed, rays_);
     const std::vector<double> front_share =

@@ -223,11 +223,13 @@ void Pipeline::check_discretisation(const PreparedSolve& prepared, const std::st
     bool coarsens = ratio >= kMinCheckRatio;
     if (coarsens && method != "hierarchical") {
         const double edge = target_patch_edge(prepared.mean_free_path_m, coarse_tolerance);
-        MeshingOptions meshing = dense_meshing(
-            edge, matrix_free ? kMaxMatrixFreePatches : kMaxDensePatches, matrix_free);
-        meshing.max_plan_bytes = memory_->available_bytes();
-        // A plan that does not fit counts fewer: the check then refuses for memory itself.
-        const std::size_t coarse_patches = PatchPlan(prepared.scene, meshing).count();
+        // A plan that does not fit counts fewer: the check's own solve then refuses it.
+        const std::size_t coarse_patches =
+            PatchPlan(
+                prepared.scene,
+                within_limits(dense_meshing(
+                    edge, matrix_free ? kMaxMatrixFreePatches : kMaxDensePatches, matrix_free)))
+                .count();
         coarsens = static_cast<double>(result.stats.patches) >=
                    kMinCheckRatio * static_cast<double>(coarse_patches);
     }
@@ -290,8 +292,7 @@ void Pipeline::refine_to_tolerance(const PreparedSolve& prepared, std::string me
         // hierarchical solver, the others with the finest mesh that fits, once.
         bool switched = false;
         if (method != "hierarchical") {
-            const DenseMeshSize size =
-                dense_mesh_size(prepared, finer.tolerance, memory_->available_bytes());
+            const DenseMeshSize size = dense_mesh_size(prepared, finer.tolerance);
             if (!size.fits && options_.method == "auto") {
                 method = "hierarchical";
                 switched = true;
@@ -361,11 +362,31 @@ bool Pipeline::prefers_hierarchy(const DenseMeshSize& size) const {
            options_.tolerance >= kMinAutoHierarchicalTolerance;
 }
 
-Pipeline::DenseMeshSize Pipeline::dense_mesh_size(const PreparedSolve& prepared, double tolerance,
-                                                  std::size_t max_plan_bytes) {
+Pipeline::DenseMeshSize Pipeline::dense_mesh_size(const PreparedSolve& prepared,
+                                                  double tolerance) const {
     const double edge = target_patch_edge(prepared.mean_free_path_m, tolerance);
-    const PatchPlan plan(prepared.scene, {edge, kMaxDensePatches, 0, max_plan_bytes});
+    const PatchPlan plan(prepared.scene, within_limits({edge, kMaxDensePatches}));
     return {plan.count(), !plan.exceeded() && plan.target_edge_m() <= edge};
+}
+
+MeshingOptions Pipeline::within_limits(MeshingOptions meshing) const {
+    meshing.max_plan_bytes = memory_->available_bytes();
+    meshing.should_stop = [this] { return should_stop(); };
+    return meshing;
+}
+
+std::optional<PatchPlan> Pipeline::plan_within_limits(const PreparedScene& scene,
+                                                      const MeshingOptions& meshing,
+                                                      const std::string& what, Result& result) {
+    PatchPlan plan(scene, within_limits(meshing));
+    if (plan.exceeded()) {
+        const std::string refusal = memory_->refusal(
+            "planning " + what + " (the pieces' contacts cut them)", plan.least_bytes());
+        stop_for_memory(refusal);
+        result.error = "memory budget: " + refusal;
+        return std::nullopt;
+    }
+    return plan;
 }
 
 SolverControl Pipeline::solving_control(double tolerance) const {
@@ -466,8 +487,7 @@ Result Pipeline::run() {
     preparation_hold.resize(preparation_held_bytes(scene_));
     prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility,
                                                prepared.triangle_piece, options_.seed, rays_);
-    if (method == "auto" && prefers_hierarchy(dense_mesh_size(prepared, options_.tolerance,
-                                                              memory_->available_bytes())))
+    if (method == "auto" && prefers_hierarchy(dense_mesh_size(prepared, options_.tolerance)))
         method = "hierarchical";
     end_stage("prepare", prepare_start);
     // Stage: checks — what looks like a modelling mistake, on the ray tracer just built and
@@ -603,19 +623,12 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         max_patches -= std::max<std::size_t>(1, max_patches / 16);
         patches_cut = true;
     }
-    MeshingOptions meshing = dense_meshing(patch_edge, max_patches, matrix_free);
-    meshing.max_plan_bytes = memory_->available_bytes();
     // Counted before it is built: a piece is one patch at least, and the lines where other
     // surfaces touch it split it further, so the mesh can exceed max_patches.
-    PatchPlan plan(prepared, meshing);
-    if (plan.exceeded()) {
-        const std::string refusal = memory_->refusal(
-            "planning the patches (the pieces' contacts cut them)", plan.least_bytes());
-        stop_for_memory(refusal);
-        result.error = "memory budget: " + refusal;
-        return result;
-    }
-    const std::size_t n = plan.count();
+    std::optional<PatchPlan> plan = plan_within_limits(
+        prepared, dense_meshing(patch_edge, max_patches, matrix_free), "the patches", result);
+    if (!plan) return result;
+    const std::size_t n = plan->count();
     if (!memory_->fits(dense_bytes(n))) {
         const std::string refusal =
             memory_->refusal(std::to_string(n) + " patches and their form factors", dense_bytes(n));
@@ -623,7 +636,7 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         result.error = "memory budget: " + refusal;
         return result;
     }
-    PatchMesh patches(prepared, std::move(plan));
+    PatchMesh patches(prepared, std::move(*plan));
     if (patches_cut && patches.target_edge_m() > patch_edge) {
         stop_for_memory(memory_->refusal("the patches the tolerance asks for", wanted_bytes));
     }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "meshing/patch_mesh.h"
 #include "radiant/solve.h"
 #include "scene/prepared_scene.h"
 #include "solver/memory_budget.h"
@@ -114,10 +115,17 @@ private:
         std::size_t patches = 0;
         bool fits = true;  ///< false: the patch size had to grow to fit the patch budget
     };
-    /// The dense path's mesh at `tolerance` (one whose plan would hold more than
-    /// `max_plan_bytes` does not fit).
-    static DenseMeshSize dense_mesh_size(const PreparedSolve& prepared, double tolerance,
-                                         std::size_t max_plan_bytes);
+    /// The dense path's mesh at `tolerance` (one whose plan would not fit what the memory budget
+    /// has left does not fit).
+    DenseMeshSize dense_mesh_size(const PreparedSolve& prepared, double tolerance) const;
+    /// `meshing` held to what the memory budget has left, and cut short by the time limit or a
+    /// cancel.
+    MeshingOptions within_limits(MeshingOptions meshing) const;
+    /// The plan of `what` ("the patches") within the limits, or nothing when it would not fit
+    /// the memory budget: `result` then fails saying so.
+    std::optional<PatchPlan> plan_within_limits(const PreparedScene& scene,
+                                                const MeshingOptions& meshing,
+                                                const std::string& what, Result& result);
     /// Whether `auto` solves a scene of few polygons hierarchically after all: its dense mesh
     /// would be `size`, too large, and the asked tolerance is one the hierarchy can meet.
     bool prefers_hierarchy(const DenseMeshSize& size) const;
