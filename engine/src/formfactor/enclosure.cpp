@@ -1,6 +1,7 @@
 #include "formfactor/enclosure.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "formfactor/quadrature.h"
@@ -66,6 +67,15 @@ struct HemisphereSurvey {
 
 // Rays after which front_shares judges whether a patch's share is worth measuring.
 constexpr int kProbeRays = 64;
+// The surveys ask whether to stop once per this many patches.
+constexpr std::size_t kStopCheckEvery = 256;
+
+// Whether to stop before patch i: `should_stop` asked every kStopCheckEvery patches, and
+// remembered in `stopped`.
+bool stopping(std::size_t i, const std::function<bool()>& should_stop, std::atomic<bool>& stopped) {
+    if (i % kStopCheckEvery == 0 && should_stop && should_stop()) stopped = true;
+    return stopped.load(std::memory_order_relaxed);
+}
 
 // Casts about `rays` rays (rounded up to g²) from stratified points of patch i, in
 // cosine-distributed directions on a jittered g × g grid of the hemisphere's cosine-weighted
@@ -124,8 +134,8 @@ HemisphereSurvey survey_hemisphere(const PreparedScene& scene, const PatchMesh& 
 std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& patches,
                                    const Visibility& visibility,
                                    std::span<const int> triangle_piece, std::uint64_t seed,
-                                   std::uint64_t& cast, int min_rays_per_patch,
-                                   int min_rays_per_piece) {
+                                   std::uint64_t& cast, const std::function<bool()>& should_stop,
+                                   int min_rays_per_patch, int min_rays_per_piece) {
     std::vector<int> piece_patches(scene.pieces.size(), 0);
     for (std::size_t i = 0; i < patches.size(); ++i)
         ++piece_patches[static_cast<std::size_t>(patches.patch(i).piece)];
@@ -133,7 +143,11 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
     // own patch. An escape is an opening, which the whole piece sees (a patch that found a back
     // looks no further: its piece's other patches see the opening as well).
     std::vector<HemisphereSurvey> found(patches.size());
+    std::vector<char> surveyed(patches.size(), 0);
+    std::atomic<bool> stopped{false};
     parallel_for(0, patches.size(), [&](std::size_t i) {
+        if (stopping(i, should_stop, stopped)) return;
+        surveyed[i] = 1;
         const int count = piece_patches[static_cast<std::size_t>(patches.patch(i).piece)];
         const int rays = std::max(min_rays_per_patch, (min_rays_per_piece + count - 1) / count);
         found[i] =
@@ -146,7 +160,7 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
     }
     std::vector<char> enclosed(patches.size(), 0);
     for (std::size_t i = 0; i < patches.size(); ++i) {
-        enclosed[i] = found[i].escaped == 0 && found[i].backs == 0 &&
+        enclosed[i] = surveyed[i] && found[i].escaped == 0 && found[i].backs == 0 &&
                       !piece_open[static_cast<std::size_t>(patches.patch(i).piece)];
     }
     return enclosed;
@@ -155,7 +169,8 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
 std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& patches,
                                  const Visibility& visibility, std::span<const int> triangle_piece,
                                  std::uint64_t seed, std::span<const char> enclosed, double wanted,
-                                 std::uint64_t& cast, int rays_per_patch, std::size_t max_rays) {
+                                 std::uint64_t& cast, const std::function<bool()>& should_stop,
+                                 int rays_per_patch, std::size_t max_rays) {
     std::vector<double> share(patches.size(), 1.0);
     const auto open = static_cast<std::size_t>(std::count(enclosed.begin(), enclosed.end(), 0));
     if (open == 0) return share;
@@ -163,8 +178,9 @@ std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& pa
         kMinFrontShareRays,
         static_cast<int>(std::min(static_cast<std::size_t>(rays_per_patch), max_rays / open)));
     std::vector<int> cast_from(patches.size(), 0);
+    std::atomic<bool> stopped{false};
     parallel_for(0, patches.size(), [&](std::size_t i) {
-        if (enclosed[i]) return;
+        if (enclosed[i] || stopping(i, should_stop, stopped)) return;
         const HemisphereSurvey s = survey_hemisphere(scene, patches, visibility, triangle_piece,
                                                      seed, i, rays, false, wanted / 2);
         share[i] = 1 - static_cast<double>(s.escaped + s.backs) / s.cast;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -20,12 +21,14 @@ namespace radiant {
 /// over a share F of it goes unnoticed only when F is well under 1/min_rays_per_piece. That
 /// matters: an enclosed patch's factors are completed to sum to 1, so an opening taken for a
 /// wall would add its F to all the patch receives. `triangle_piece` maps the visibility's
-/// triangles to pieces. Deterministic in `seed`. Adds the rays it casts to `cast`.
+/// triangles to pieces. Deterministic in `seed`. Adds the rays it casts to `cast`. Once
+/// `should_stop` (asked now and then) is true, the patches not yet surveyed are taken as open.
 std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& patches,
                                    const Visibility& visibility,
                                    std::span<const int> triangle_piece, std::uint64_t seed,
-                                   std::uint64_t& cast, int min_rays_per_patch = 16,
-                                   int min_rays_per_piece = 256);
+                                   std::uint64_t& cast,
+                                   const std::function<bool()>& should_stop = nullptr,
+                                   int min_rays_per_patch = 16, int min_rays_per_piece = 256);
 
 /// Fewest rays front_shares casts from a patch, whatever its budget.
 constexpr int kMinFrontShareRays = 256;
@@ -36,12 +39,13 @@ constexpr int kMinFrontShareRays = 256;
 /// patch's factors should sum to: the hierarchical solver completes those that see an opening
 /// or a back to it. A share found to be well under `wanted` after a first 64 rays (a patch
 /// inside furniture, under a box) is left at that rough estimate. Adds the rays it casts to
-/// `cast`.
+/// `cast`. Once `should_stop` (asked now and then) is true, the shares not yet measured stay 1.
 std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& patches,
                                  const Visibility& visibility, std::span<const int> triangle_piece,
                                  std::uint64_t seed, std::span<const char> enclosed, double wanted,
-                                 std::uint64_t& cast, int rays_per_patch = 1024,
-                                 std::size_t max_rays = 1u << 23);
+                                 std::uint64_t& cast,
+                                 const std::function<bool()>& should_stop = nullptr,
+                                 int rays_per_patch = 1024, std::size_t max_rays = 1u << 23);
 
 /// Mean distance (m) from the surfaces to the next surface along cosine-distributed rays:
 /// the mean free path of light between bounces, over which radiosity varies. It equals 4V/S in

@@ -99,11 +99,12 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     MemoryHold roots_hold(*memory_, root_count * kRootPatchBytes);
     MemoryHold tree_hold(*memory_, first_bytes - roots_hold.bytes());
     const PatchMesh roots(scene, std::move(*root_plan));
-    const std::vector<char> enclosed =
-        enclosed_patches(scene, roots, visibility, input.triangle_piece, options_.seed, rays_);
+    const auto stop = [this] { return should_stop(); };
+    const std::vector<char> enclosed = enclosed_patches(
+        scene, roots, visibility, input.triangle_piece, options_.seed, rays_, stop);
     const std::vector<double> front_share =
         front_shares(scene, roots, visibility, input.triangle_piece, options_.seed, enclosed,
-                     kMinFrontShare, rays_);
+                     kMinFrontShare, rays_, stop);
     std::vector<char> completed(roots.size());
     for (std::size_t i = 0; i < roots.size(); ++i) completed[i] = completes(front_share[i]);
     ElementTree tree(scene, roots, visibility, kMinEdgeFactor * patch_edge, options_.seed);

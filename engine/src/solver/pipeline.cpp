@@ -649,9 +649,10 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     const OcclusionCulling culling(prepared);
     TransportOptions transport_options;
     transport_options.seed = options_.seed;
-    const Transport transport(prepared, patches, visibility, culling, transport_options,
-                              enclosed_patches(prepared, patches, visibility,
-                                               solve_input.triangle_piece, options_.seed, rays_));
+    const Transport transport(
+        prepared, patches, visibility, culling, transport_options,
+        enclosed_patches(prepared, patches, visibility, solve_input.triangle_piece, options_.seed,
+                         rays_, [this] { return should_stop(); }));
 
     auto display_mesh = [&](const std::array<std::vector<double>, 3>& v) {
         std::vector<double> display(n);
