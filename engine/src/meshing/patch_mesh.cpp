@@ -260,9 +260,14 @@ struct Partners {
 // Each lists the other.
 constexpr std::size_t kPairBytes = 2 * sizeof(int);
 
-// The partners, or nothing when there are more than max_pairs pairs (counted no further).
+// The sweep asks whether to stop once per this many candidate pairs.
+constexpr std::size_t kStopCheckPairs = std::size_t{1} << 20;
+
+// The partners, or nothing when there are more than max_pairs pairs (counted no further); none
+// when `should_stop` stopped the sweep (its pieces are then not cut at all).
 std::optional<Partners> overlapping_pieces(const PreparedScene& scene, double pad,
-                                           std::size_t max_pairs) {
+                                           std::size_t max_pairs,
+                                           const std::function<bool()>& should_stop) {
     const std::size_t k = scene.pieces.size();
     std::vector<Box3> box(k);
     for (std::size_t i = 0; i < k; ++i) box[i] = bounds(scene.pieces[i].vertices, pad);
@@ -270,32 +275,40 @@ std::optional<Partners> overlapping_pieces(const PreparedScene& scene, double pa
     for (std::size_t i = 0; i < k; ++i) order[i] = i;
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return box[a].lo.x < box[b].lo.x; });
-    // pair(i, j) for every overlapping pair while it returns true.
+    // pair(i, j) for every overlapping pair while it returns true; false when it did not, or
+    // when should_stop stopped it.
+    std::size_t candidates = 0;
     auto sweep = [&](auto&& pair) {
         for (std::size_t oi = 0; oi < k; ++oi) {
             const std::size_t i = order[oi];
             for (std::size_t oj = oi + 1; oj < k && box[order[oj]].lo.x <= box[i].hi.x; ++oj) {
-                if (overlap(box[i], box[order[oj]]) && !pair(i, order[oj])) return;
+                if (++candidates % kStopCheckPairs == 0 && should_stop && should_stop())
+                    return false;
+                if (overlap(box[i], box[order[oj]]) && !pair(i, order[oj])) return false;
             }
         }
+        return true;
     };
+    const auto none = [k] { return Partners{std::vector<std::size_t>(k + 1, 0), {}}; };
     Partners out;
     out.first.assign(k + 1, 0);
     std::size_t pairs = 0;
-    sweep([&](std::size_t i, std::size_t j) {
+    const bool counted = sweep([&](std::size_t i, std::size_t j) {
         ++out.first[i + 1];
         ++out.first[j + 1];
         return ++pairs <= max_pairs;
     });
     if (pairs > max_pairs) return std::nullopt;
+    if (!counted) return none();
     for (std::size_t i = 0; i < k; ++i) out.first[i + 1] += out.first[i];
     out.partner.resize(out.first[k]);
     std::vector<std::size_t> next(out.first.begin(), out.first.end() - 1);
-    sweep([&](std::size_t i, std::size_t j) {
+    const bool filled = sweep([&](std::size_t i, std::size_t j) {
         out.partner[next[i]++] = static_cast<int>(j);
         out.partner[next[j]++] = static_cast<int>(i);
         return true;
     });
+    if (!filled) return none();
     return out;
 }
 
@@ -370,7 +383,7 @@ PatchPlan::PatchPlan(const PreparedScene& scene, const MeshingOptions& options)
     const double gap = options.shading_gap_m > 0 ? options.shading_gap_m : 0.5 * target_edge_m_;
     const std::size_t max_pairs = (max_bytes - subdivided_bytes) / kPairBytes;
     const std::optional<Partners> partners =
-        overlapping_pieces(scene, std::max(epsilon_, gap), max_pairs);
+        overlapping_pieces(scene, std::max(epsilon_, gap), max_pairs, options.should_stop);
     if (!partners) {
         least_bytes_ = subdivided_bytes + (max_pairs + 1) * kPairBytes;
         return;
