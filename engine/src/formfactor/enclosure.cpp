@@ -1,13 +1,13 @@
 #include "formfactor/enclosure.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 
 #include "formfactor/quadrature.h"
 #include "geometry/cosine_direction.h"
 #include "geometry/random.h"
 #include "parallel/fork_join.h"
+#include "parallel/stop_poll.h"
 
 namespace radiant {
 namespace {
@@ -69,13 +69,6 @@ struct HemisphereSurvey {
 constexpr int kProbeRays = 64;
 // The surveys ask whether to stop once per this many patches.
 constexpr std::size_t kStopCheckEvery = 256;
-
-// Whether to stop before patch i: `should_stop` asked every kStopCheckEvery patches, and
-// remembered in `stopped`.
-bool stopping(std::size_t i, const std::function<bool()>& should_stop, std::atomic<bool>& stopped) {
-    if (i % kStopCheckEvery == 0 && should_stop && should_stop()) stopped = true;
-    return stopped.load(std::memory_order_relaxed);
-}
 
 // Casts about `rays` rays (rounded up to g²) from stratified points of patch i, in
 // cosine-distributed directions on a jittered g × g grid of the hemisphere's cosine-weighted
@@ -144,9 +137,9 @@ std::vector<char> enclosed_patches(const PreparedScene& scene, const PatchMesh& 
     // looks no further: its piece's other patches see the opening as well).
     std::vector<HemisphereSurvey> found(patches.size());
     std::vector<char> surveyed(patches.size(), 0);
-    std::atomic<bool> stopped{false};
+    StopPoll stop(should_stop, kStopCheckEvery);
     parallel_for(0, patches.size(), [&](std::size_t i) {
-        if (stopping(i, should_stop, stopped)) return;
+        if (stop(i)) return;
         surveyed[i] = 1;
         const int count = piece_patches[static_cast<std::size_t>(patches.patch(i).piece)];
         const int rays = std::max(min_rays_per_patch, (min_rays_per_piece + count - 1) / count);
@@ -178,9 +171,9 @@ std::vector<double> front_shares(const PreparedScene& scene, const PatchMesh& pa
         kMinFrontShareRays,
         static_cast<int>(std::min(static_cast<std::size_t>(rays_per_patch), max_rays / open)));
     std::vector<int> cast_from(patches.size(), 0);
-    std::atomic<bool> stopped{false};
+    StopPoll stop(should_stop, kStopCheckEvery);
     parallel_for(0, patches.size(), [&](std::size_t i) {
-        if (enclosed[i] || stopping(i, should_stop, stopped)) return;
+        if (enclosed[i] || stop(i)) return;
         const HemisphereSurvey s = survey_hemisphere(scene, patches, visibility, triangle_piece,
                                                      seed, i, rays, false, wanted / 2);
         share[i] = 1 - static_cast<double>(s.escaped + s.backs) / s.cast;

@@ -11,6 +11,7 @@
 #include "formfactor/quadrature.h"
 #include "geometry/polygon_split.h"
 #include "parallel/fork_join.h"
+#include "parallel/stop_poll.h"
 
 namespace radiant {
 namespace {
@@ -278,12 +279,12 @@ std::optional<Partners> overlapping_pieces(const PreparedScene& scene, double pa
     // pair(i, j) for every overlapping pair while it returns true; false when it did not, or
     // when should_stop stopped it.
     std::size_t candidates = 0;
+    StopPoll stop(should_stop, kStopCheckPairs);
     auto sweep = [&](auto&& pair) {
         for (std::size_t oi = 0; oi < k; ++oi) {
             const std::size_t i = order[oi];
             for (std::size_t oj = oi + 1; oj < k && box[order[oj]].lo.x <= box[i].hi.x; ++oj) {
-                if (++candidates % kStopCheckPairs == 0 && should_stop && should_stop())
-                    return false;
+                if (stop(++candidates)) return false;
                 if (overlap(box[i], box[order[oj]]) && !pair(i, order[oj])) return false;
             }
         }
@@ -390,9 +391,10 @@ PatchPlan::PatchPlan(const PreparedScene& scene, const MeshingOptions& options)
     }
     const std::size_t pair_bytes = partners->partner.size() / 2 * kPairBytes;
     std::atomic<std::size_t> polygons{polygon_count(polygons_)};
-    std::atomic<bool> over{false}, stop{false};
+    std::atomic<bool> over{false};
     // Asked every this many contacts (a piece cut into many slivers takes long).
     constexpr std::size_t kStopCheckEvery = 64;
+    StopPoll stop(options.should_stop, kStopCheckEvery);
     overlays_.assign(k, {});
     parallel_for(0, k, [&](std::size_t i) {
         if (over.load(std::memory_order_relaxed)) return;
@@ -406,10 +408,7 @@ PatchPlan::PatchPlan(const PreparedScene& scene, const MeshingOptions& options)
             if (overlays(q, static_cast<std::size_t>(j), r, i, epsilon_)) overlays_[i].push_back(j);
         }
         for (std::size_t n = 0; n < segments.size(); ++n) {
-            if (n % kStopCheckEvery == 0 && options.should_stop && options.should_stop())
-                stop = true;
-            if (stop.load(std::memory_order_relaxed) || over.load(std::memory_order_relaxed))
-                return;
+            if (stop(n) || over.load(std::memory_order_relaxed)) return;
             const std::size_t before = polygons_[i].size();
             split_along(polygons_[i], segments[n], r.normal, epsilon_);
             if (polygons_[i].size() == before) continue;  // most contacts split nothing
