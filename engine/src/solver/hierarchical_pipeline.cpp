@@ -88,12 +88,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     const std::size_t first_bytes =
         root_count * (kRootPatchBytes + kFirstTreeBytesPerRoot + kLaterBytesPerElement);
     if (!memory_->fits(first_bytes)) {
-        const std::string refusal =
-            memory_->refusal("the hierarchical solver's " + std::to_string(root_count) +
-                                 " root patches and their element tree",
-                             first_bytes);
-        stop_for_memory(refusal);
-        result.error = "memory budget: " + refusal;
+        fail_for_memory(result,
+                        memory_->refusal("the hierarchical solver's " + std::to_string(root_count) +
+                                             " root patches and their element tree",
+                                         first_bytes));
         return result;
     }
     MemoryHold roots_hold(*memory_, root_count * kRootPatchBytes);
@@ -161,12 +159,11 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     const bool unoccluded = nothing_can_occlude(scene);
     criteria.unoccluded = unoccluded;
     // Surfaces the sensors cannot see, directly or by reflection, need not be refined as finely.
-    const ImportanceEstimate importance =
-        estimate_sensor_importance(scene, roots, tree, visibility, input.triangle_piece,
-                                   options_.seed, [this] { return should_stop(); });
+    const ImportanceEstimate importance = estimate_sensor_importance(
+        scene, roots, tree, visibility, input.triangle_piece, options_.seed, stop);
     rays_ += importance.rays;
     criteria.receiver_weight = importance.refinement_weight;
-    criteria.should_stop = [this] { return should_stop(); };
+    criteria.should_stop = stop;
     const std::uint64_t rays_before_links = rays_;
     criteria.on_round = [&](int rounds, std::uint64_t rays, std::size_t links) {
         rays_ = rays_before_links + rays;

@@ -380,10 +380,9 @@ std::optional<PatchPlan> Pipeline::plan_within_limits(const PreparedScene& scene
                                                       const std::string& what, Result& result) {
     PatchPlan plan(scene, within_limits(meshing));
     if (plan.exceeded()) {
-        const std::string refusal = memory_->refusal(
-            "planning " + what + " (the pieces' contacts cut them)", plan.least_bytes());
-        stop_for_memory(refusal);
-        result.error = "memory budget: " + refusal;
+        fail_for_memory(result,
+                        memory_->refusal("planning " + what + " (the pieces' contacts cut them)",
+                                         plan.least_bytes()));
         return std::nullopt;
     }
     return plan;
@@ -553,6 +552,11 @@ void Pipeline::stop_for_memory(const std::string& refusal) {
     if (memory_stop_.empty()) memory_stop_ = refusal;
 }
 
+void Pipeline::fail_for_memory(Result& result, const std::string& refusal) {
+    stop_for_memory(refusal);
+    result.error = "memory budget: " + refusal;
+}
+
 void Pipeline::floor_estimate(Result& solved) const {
     const bool dense =
         solved.stats.method != "hierarchical" && solved.stats.method != "monte-carlo";
@@ -630,10 +634,9 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
     if (!plan) return result;
     const std::size_t n = plan->count();
     if (!memory_->fits(dense_bytes(n))) {
-        const std::string refusal =
-            memory_->refusal(std::to_string(n) + " patches and their form factors", dense_bytes(n));
-        stop_for_memory(refusal);
-        result.error = "memory budget: " + refusal;
+        fail_for_memory(result,
+                        memory_->refusal(std::to_string(n) + " patches and their form factors",
+                                         dense_bytes(n)));
         return result;
     }
     PatchMesh patches(prepared, std::move(*plan));

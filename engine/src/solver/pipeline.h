@@ -152,6 +152,8 @@ private:
 
     /// Stops refinement for want of memory: the result becomes `stopped`, saying why.
     void stop_for_memory(const std::string& refusal);
+    /// A first step that does not fit: `result` fails, saying why, and so does the solve.
+    void fail_for_memory(Result& result, const std::string& refusal);
 
     const Scene& scene_;
     const SolveOptions& options_;
