@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "checks/solve_outcome.h"
 #include "radiant/proto/honeybee.h"
 #include "radiant/proto/result_json.h"
 #include "radiant/proto/scene_json.h"
@@ -230,6 +231,30 @@ TEST(ModellingChecks, TimeLimitIsAWarningAndStrictMakesItAFailure) {
     options.max_seconds.reset();
     const Result cancelled = solve(scene, options, nullptr, &cancel);
     EXPECT_TRUE(cancelled.warnings.empty()) << listed(cancelled.warnings);
+}
+
+// A solve stopped at its limit says where its estimate stands against the tolerance: a stop
+// during a first estimate below the tolerance (a hierarchical solve swept in its grace, say) is
+// not "over" it.
+TEST(ModellingChecks, TimeLimitWarningPlacesTheEstimateAgainstTheTolerance) {
+    SolveOptions options;
+    options.tolerance = 0.01;
+    options.max_seconds = 10;
+    Result r;
+    r.status = SolveStatus::stopped;
+    r.stats.seconds = 10.2;
+    auto message = [&](double estimate) {
+        r.stats.error_estimate = estimate;
+        std::vector<Warning> out;
+        check_solve_outcome(r, options, false, out);
+        return out.size() == 1 ? out.front().message : listed(out);
+    };
+    EXPECT_NE(message(0.5).find("an error estimate of 0.5, over the tolerance 0.01:"),
+              std::string::npos)
+        << message(0.5);
+    EXPECT_NE(message(0.004).find("an error estimate of 0.004 (tolerance 0.01):"),
+              std::string::npos)
+        << message(0.004);
 }
 
 TEST(ModellingChecks, SettingsStrictIsReadAndChecked) {

@@ -22,8 +22,10 @@ void check_solve_outcome(const Result& result, const SolveOptions& options, bool
                          std::vector<Warning>& out) {
     if (result.status == SolveStatus::failed || cancelled) return;
     const SolveStats& st = result.stats;
-    const std::string estimate = "an error estimate of " + number(st.error_estimate) +
-                                 ", over the tolerance " + number(options.tolerance);
+    const std::string estimate =
+        "an error estimate of " + number(st.error_estimate) +
+        (st.error_estimate > options.tolerance ? ", over the tolerance " : " (tolerance ") +
+        number(options.tolerance) + (st.error_estimate > options.tolerance ? "" : ")");
     if (options.max_seconds) {
         const double limit = *options.max_seconds;
         const double overrun = st.seconds - limit;

@@ -42,6 +42,8 @@ public:
 
     /// Irradiance (lux, per channel) on the front of leaf `e`, links and luminaires together.
     const Rgb& leaf_irradiance(int e) const { return irradiance_[static_cast<std::size_t>(e)]; }
+    /// The sum of leaf `e`'s and its ancestors' link factors, before any completion.
+    double factor_sum(std::size_t e) const { return completion_.factor_sum[e]; }
 
     /// Irradiance and radiosity per element (per channel; the leaves' are the answer).
     struct LeafLight {

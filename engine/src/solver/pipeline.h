@@ -145,6 +145,9 @@ private:
     /// Control for the solving stage: `tolerance`, the deadline, cancellation, progress reports
     /// and the snapshot interval of the options.
     SolverControl solving_control(double tolerance) const;
+    /// Gives `control` a grace past a time limit already reached (kSweepGraceShare of it, at
+    /// least kMinSweepGraceSeconds); not after a cancel, nor inside another solve.
+    void grant_sweep_grace(SolverControl& control) const;
     /// Fills the statistics every method reports alike.
     void finish_stats(Result& result, const std::string& method, std::size_t patches,
                       std::size_t iterations, double error_estimate, double unshot_fraction,
