@@ -151,9 +151,9 @@ TEST(MemoryBudget, PiecesThatWouldCutEachOtherIntoSliversAreRefusedWhileBeingPla
     }
 }
 
-// A cancel (or the time limit) while they are being cut leaves the rest of the contacts uncut:
-// a coarser mesh at once, and the solve stops with what it has instead of cutting on for
-// seconds. Within 3 GiB the whole plan would fit, and its 1.65 million root patches would not.
+// A cancel (or the time limit) while they are being cut drops the cuts (patch_plan_test): the
+// pieces' subdivision alone, and the solve stops with it instead of cutting on for seconds. Within
+// 3 GiB the whole plan would fit, and its 1.65 million root patches would not.
 TEST(MemoryBudget, ACancelWhileCrossingPiecesAreCutStopsCuttingThem) {
     Scene scene = office();
     for (Surface& shard : testing::crossing_shards(600, {4, 3, 1.5}, 0.3, "desk"))

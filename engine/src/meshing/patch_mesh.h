@@ -49,9 +49,9 @@ struct MeshingOptions {
     /// The plan may hold at most this (its polygons and the pairs of pieces that may touch);
     /// 0: no limit. A plan that would hold more stops there, `exceeded`.
     std::size_t max_plan_bytes = 0;
-    /// Asked now and then while the pieces are cut; once it is true (a time limit, a cancel), the
-    /// rest of the contacts no longer cut them: a coarser plan, made at once, for a solve that
-    /// stops with what it has.
+    /// Asked now and then while the pieces are cut; once it is true (a time limit, a cancel), no
+    /// contact cuts them, not even those already cut: the pieces' subdivision alone, for a solve
+    /// that stops with what it has.
     std::function<bool()> should_stop = nullptr;
 };
 
