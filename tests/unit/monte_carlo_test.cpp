@@ -207,6 +207,41 @@ TEST(MonteCarlo, AgreesWithTheDenseSolverWithinBothEstimates) {
     EXPECT_GT(mc.stats.error_parts.photon_noise, 0);
 }
 
+// At a time limit the first round still completes (for a tenth of the limit, at least 0.5 s,
+// past it): its samples are what any estimate is made of. Stopped in it, the furnished office
+// answered 0 lx everywhere with an estimate of 0.04 %.
+TEST(MonteCarlo, AtATimeLimitTheFirstRoundStillCompletes) {
+    Scene scene = testing::furnace_cube(0.5);
+    scene.sensors.push_back(testing::sensor_points("inside", {{0.5, 0.5, 0.5}, {0.2, 0.7, 0.3}}));
+    SolveOptions options;
+    options.method = "monte-carlo";
+    options.tolerance = 0.001;
+    options.max_seconds = 1e-3;
+    const Result r = solve(scene, options);
+    ASSERT_EQ(r.status, SolveStatus::stopped) << describe(r);
+    EXPECT_EQ(r.stats.iterations, 1u) << describe(r);
+    const double error = rms_relative_error(r.sensors.at(0).illuminance, {2, 2});
+    EXPECT_LT(error, 0.1) << describe(r);
+    EXPECT_GE(r.stats.error_estimate, error) << describe(r);
+    EXPECT_GE(r.sensors.at(0).error_estimate, error) << describe(r);
+}
+
+// A cancel ends even the first round: an answer whose samples measure nothing claims twice its
+// own size, overall and for each sensor set (its error is its size where it is dark).
+TEST(MonteCarlo, AnAnswerWithoutOneCompleteRoundClaimsTwiceItsSize) {
+    Scene scene = testing::furnace_cube(0.5);
+    scene.sensors.push_back(testing::sensor_points("inside", {{0.5, 0.5, 0.5}, {0.2, 0.7, 0.3}}));
+    SolveOptions options;
+    options.method = "monte-carlo";
+    CancellationToken cancelled;
+    cancelled.cancel();
+    const Result r = solve(scene, options, nullptr, &cancelled);
+    ASSERT_EQ(r.status, SolveStatus::stopped) << describe(r);
+    EXPECT_GE(r.stats.error_estimate, 2) << describe(r);
+    EXPECT_GE(r.sensors.at(0).error_estimate, 2) << describe(r);
+    EXPECT_GE(r.stats.error_estimate, rms_relative_error(r.sensors.at(0).illuminance, {2, 2}));
+}
+
 // Tolerance means error: at a loose tolerance the first round is cut to it, so that the answer
 // is not ten times more accurate than asked (its estimate is about twice its error).
 TEST(MonteCarlo, ALooseToleranceIsNotMetTenTimesOver) {

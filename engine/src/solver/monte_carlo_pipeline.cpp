@@ -51,6 +51,9 @@ constexpr double kRefinementRatio = 0.5;
 constexpr int kMaxRefinements = 3;
 // Mesh versions: one per level of elements.
 constexpr std::uint64_t kFirstMeshVersion = 1;
+// The error an answer without one complete round claims: twice its own size (a dark answer is
+// off by the RMS of the truth over its mean: 1.05 on the furnished office's work plane).
+constexpr double kUnmeasuredEstimate = 2;
 // An observer's background luminance moves its UGR by 8·log10(1 + δ) when off by δ: it is held
 // to the δ that moves UGR by this much (5.9 %), or to the tolerance where that is finer. UGR
 // is read in whole units; its light, all reflected, would otherwise cost ten times the photons.
@@ -374,7 +377,12 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     const double eye_scale =
         options_.tolerance / std::max(options_.tolerance, std::pow(10.0, kUgrErrorTarget / 8) - 1);
 
-    const auto stop = [this] { return should_stop(); };
+    // A level's first round's samples are what any estimate of its answer is made of: at the
+    // time limit it may run the grace past it to complete them.
+    bool measured = false;
+    const auto stop = [this, &measured] {
+        return measured ? should_stop() : should_stop_after_grace();
+    };
     StageStats meshing{"meshing", 0, 0, 0}, photons{"photons", 0, 0, 0};
     StageStats gathering{"gather", 0, 0, 0}, estimating{"estimate", 0, 0, 0};
     std::uint64_t eye_rays = 0;
@@ -433,6 +441,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         Clock::time_point stage_start = Clock::now();
         report("meshing", 0.02, rounds, estimate_so_far(reported));
         level.reset();  // the finer level replaces it (its estimate was held in its place)
+        measured = false;
         std::uint64_t meshing_rays = 0;
         level = std::make_unique<MonteCarloLevel>(
             scene, edge, kNearOfFreePath * input.mean_free_path_m, options_.seed, meshing_rays);
@@ -523,12 +532,13 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             // A round cut short by a cancel or the time limit has not earned `converged`.
             const bool complete = std::all_of(level->lights.begin(), level->lights.end(),
                                               [](const auto& light) { return light->complete(); });
-            if (!complete || should_stop()) {
-                stopped = true;
+            measured = measured || complete;
+            if (complete && std::all_of(level->lights.begin(), level->lights.end(),
+                                        [&](const auto& light) { return done(*light); })) {
                 break;
             }
-            if (std::all_of(level->lights.begin(), level->lights.end(),
-                            [&](const auto& light) { return done(*light); })) {
+            if (!complete || should_stop()) {
+                stopped = true;
                 break;
             }
             if (sets_cut) {
@@ -618,10 +628,17 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     result.stats.absorbed_flux_lm = summary.absorbed_flux_lm;
     const auto solved = std::make_shared<const SolvedMesh>(display_mesh(scene, mesh, sides));
     if (options_.want_mesh) result.mesh = *solved;
+    // Without one complete round of its level (a cancel, or a grace too short) the spread of the
+    // samples measures nothing: with none the answer is dark and its error at least its size.
+    if (!measured) reported = std::max(reported, kUnmeasuredEstimate);
     finish_stats(result, "monte-carlo", mesh.size(), rounds, reported, 0, scene.channels, stopped);
     result.stats.error_parts = error.parts;
     assemble_lighting(scene_, scene, component_values(scene, *level, *input.visibility, rays_),
                       result);
+    if (!measured) {
+        for (SensorResult& set : result.sensors)
+            set.error_estimate = std::max(set.error_estimate, kUnmeasuredEstimate);
+    }
     result.stats.rays = rays_;
     final_mesh_ = solved;
     final_mesh_version_ = mesh_version;

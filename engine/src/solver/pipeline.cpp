@@ -99,11 +99,12 @@ constexpr std::size_t kDensePatchBytes = 3072;
 // What a discretisation check that could not coarsen the mesh (the tolerance already gives the
 // scene's coarsest) claims, in tolerances: more than one, so that a finer solve measures it.
 constexpr double kUncheckedShare = 2;
-// Links made before the time limit are the costly part of a hierarchical solve, and unswept
-// they answer with the emitters' first shot only (the furnished office, stopped as its linking
-// ended: 18 % off): they are swept for this share of the limit past it.
-constexpr double kSweepGraceShare = 0.1;
-constexpr double kMinSweepGraceSeconds = 0.5;
+// What a solve stopped at its time limit would otherwise answer without a measure of its error
+// may run this share of the limit past it: a hierarchical solve's sweeps of the links it made
+// (unswept they answer with the emitters' first shot only: the furnished office, stopped as its
+// linking ended, 18 % off), Monte Carlo's first round (the samples any estimate is made of).
+constexpr double kGraceShare = 0.1;
+constexpr double kMinGraceSeconds = 0.5;
 // Mesh versions of refined solutions: above those of either path (dense 1, hierarchical 1–3),
 // so a viewer sees the triangles change.
 constexpr std::uint64_t kFirstRefinedMeshVersion = 4;
@@ -409,15 +410,23 @@ SolverControl Pipeline::solving_control(double tolerance) const {
     return control;
 }
 
-void Pipeline::grant_sweep_grace(SolverControl& control) const {
-    if (nested_ || !deadline_ || (cancel_ && cancel_->cancelled())) return;
-    const Clock::time_point now = Clock::now();
-    if (now < *deadline_) return;
-    const auto grace = std::max<Clock::duration>(
-        std::chrono::duration_cast<Clock::duration>(kSweepGraceShare * (*deadline_ - start_)),
+std::optional<Pipeline::Clock::duration> Pipeline::grace() const {
+    if (nested_ || !deadline_ || (cancel_ && cancel_->cancelled())) return std::nullopt;
+    return std::max<Clock::duration>(
+        std::chrono::duration_cast<Clock::duration>(kGraceShare * (*deadline_ - start_)),
         std::chrono::duration_cast<Clock::duration>(
-            std::chrono::duration<double>(kMinSweepGraceSeconds)));
-    control.deadline = now + grace;
+            std::chrono::duration<double>(kMinGraceSeconds)));
+}
+
+void Pipeline::grant_sweep_grace(SolverControl& control) const {
+    const Clock::time_point now = Clock::now();
+    const std::optional<Clock::duration> extra = grace();
+    if (extra && now >= *deadline_) control.deadline = now + *extra;
+}
+
+bool Pipeline::should_stop_after_grace() const {
+    const std::optional<Clock::duration> extra = grace();
+    return extra ? Clock::now() >= *deadline_ + *extra : should_stop();
 }
 
 void Pipeline::finish_stats(Result& result, const std::string& method, std::size_t patches,

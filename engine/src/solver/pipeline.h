@@ -145,9 +145,14 @@ private:
     /// Control for the solving stage: `tolerance`, the deadline, cancellation, progress reports
     /// and the snapshot interval of the options.
     SolverControl solving_control(double tolerance) const;
-    /// Gives `control` a grace past a time limit already reached (kSweepGraceShare of it, at
-    /// least kMinSweepGraceSeconds); not after a cancel, nor inside another solve.
+    /// How long past the time limit a solve may run to measure its answer (kGraceShare of the
+    /// limit, at least kMinGraceSeconds); none without a limit, after a cancel or inside another
+    /// solve.
+    std::optional<Clock::duration> grace() const;
+    /// Gives `control` the grace, from now, once the time limit is reached.
     void grant_sweep_grace(SolverControl& control) const;
+    /// should_stop(), with the grace added to the time limit.
+    bool should_stop_after_grace() const;
     /// Fills the statistics every method reports alike.
     void finish_stats(Result& result, const std::string& method, std::size_t patches,
                       std::size_t iterations, double error_estimate, double unshot_fraction,
