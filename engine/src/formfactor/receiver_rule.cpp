@@ -1,6 +1,7 @@
 #include "formfactor/receiver_rule.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "parallel/fork_join.h"
 
@@ -20,54 +21,127 @@ std::vector<QuadraturePoint> positive_rule(const std::vector<Vec3>& polygon, int
     return polygon_quadrature(polygon, 1);
 }
 
-// Patches sorted by centroid x, so that the neighbours that can matter to nearness() are found
-// without visiting every patch (O(n²) for a scene of 100 000 patches).
-struct SweepOrder {
-    std::vector<std::size_t> order;
-    std::vector<double> x;  // centroid x, in `order`
-    double max_diameter = 0;
-
-    explicit SweepOrder(const PatchMesh& patches) : order(patches.size()) {
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return patches.patch(a).centroid.x < patches.patch(b).centroid.x;
-        });
-        x.reserve(order.size());
-        for (const std::size_t i : order) {
-            x.push_back(patches.patch(i).centroid.x);
-            max_diameter = std::max(max_diameter, patches.patch(i).diameter_m);
-        }
-    }
-};
-
 // The rule only distinguishes ratios below 0.5, below 1.5 and above: a neighbour further than
 // this many diameters away cannot change it.
 constexpr double kFarthestThatMatters = 2.0;
+// Patches per leaf of the centroid tree.
+constexpr std::size_t kLeafPatches = 8;
+
+// The patches in a k-d tree of their centroids (median splits along the longest axis), each node
+// with its centroids' bounds and its patches' largest radius, so that nearness() visits only the
+// nodes that can hold a patch nearer than the nearest found so far. A sweep along x with the
+// scene's largest patch as its reach visited a fifth of the furnished office's 140 000 patches
+// for each of them (16 s).
+class CentroidTree {
+public:
+    explicit CentroidTree(const PatchMesh& patches) : patches_(patches), order_(patches.size()) {
+        for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = i;
+        if (!order_.empty()) build(0, order_.size());
+    }
+
+    /// Calls `visit(j)` for the patches j whose distance |Δc| − radius_j from `c` may be below
+    /// `bound()`, which may shrink as they are visited.
+    template <class Visit, class Bound>
+    void visit_near(const Vec3& c, Visit&& visit, Bound&& bound) const {
+        if (!nodes_.empty()) visit_node(0, c, visit, bound);
+    }
+
+private:
+    struct Node {
+        Vec3 lo, hi;
+        double max_radius = 0;
+        std::size_t begin = 0, end = 0;
+        std::size_t left = 0, right = 0;  // 0: a leaf (the root is never a child)
+    };
+
+    const Vec3& centroid(std::size_t k) const { return patches_.patch(order_[k]).centroid; }
+
+    std::size_t build(std::size_t begin, std::size_t end) {
+        const std::size_t at = nodes_.size();
+        nodes_.emplace_back();
+        Node node;
+        node.begin = begin;
+        node.end = end;
+        node.lo = node.hi = centroid(begin);
+        for (std::size_t k = begin; k < end; ++k) {
+            const PatchGeometry& p = patches_.patch(order_[k]);
+            for (int a = 0; a < 3; ++a) {
+                node.lo[a] = std::min(node.lo[a], p.centroid[a]);
+                node.hi[a] = std::max(node.hi[a], p.centroid[a]);
+            }
+            node.max_radius = std::max(node.max_radius, 0.5 * p.diameter_m);
+        }
+        if (end - begin > kLeafPatches) {
+            const Vec3 extent = node.hi - node.lo;
+            const int axis =
+                extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+            const std::size_t mid = begin + (end - begin) / 2;
+            std::nth_element(order_.begin() + static_cast<std::ptrdiff_t>(begin),
+                             order_.begin() + static_cast<std::ptrdiff_t>(mid),
+                             order_.begin() + static_cast<std::ptrdiff_t>(end),
+                             [&](std::size_t a, std::size_t b) {
+                                 return patches_.patch(a).centroid[axis] <
+                                        patches_.patch(b).centroid[axis];
+                             });
+            node.left = build(begin, mid);
+            node.right = build(mid, end);
+        }
+        nodes_[at] = node;
+        return at;
+    }
+
+    // Distance from c to the node's centroid bounds.
+    static double box_distance(const Node& n, const Vec3& c) {
+        double d2 = 0;
+        for (int a = 0; a < 3; ++a) {
+            const double d = std::max({n.lo[a] - c[a], 0.0, c[a] - n.hi[a]});
+            d2 += d * d;
+        }
+        return std::sqrt(d2);
+    }
+
+    template <class Visit, class Bound>
+    void visit_node(std::size_t at, const Vec3& c, Visit& visit, Bound& bound) const {
+        const Node& n = nodes_[at];
+        if (box_distance(n, c) - n.max_radius >= bound()) return;
+        if (n.left == 0) {
+            for (std::size_t k = n.begin; k < n.end; ++k) visit(order_[k]);
+            return;
+        }
+        const bool left_first = box_distance(nodes_[n.left], c) <= box_distance(nodes_[n.right], c);
+        visit_node(left_first ? n.left : n.right, c, visit, bound);
+        visit_node(left_first ? n.right : n.left, c, visit, bound);
+    }
+
+    const PatchMesh& patches_;
+    std::vector<std::size_t> order_;
+    std::vector<Node> nodes_;
+};
 
 // Size of patch i over its distance to the nearest patch it exchanges light with at an angle.
 // Neighbours within ~25° of coplanar (facets of a curved surface) see each other at grazing
 // angles only, so they do not call for the fine rule the kernel singularity of a corner needs.
-// Only neighbours that can be nearer than kFarthestThatMatters diameters are visited; when there
-// is none the ratio is below 1 / kFarthestThatMatters either way.
-double nearness(const PatchMesh& patches, const SweepOrder& sweep, std::size_t i) {
+// Only neighbours nearer than kFarthestThatMatters diameters are looked for; when there is none
+// the ratio is below 1 / kFarthestThatMatters either way.
+double nearness(const PatchMesh& patches, const CentroidTree& tree, std::size_t i) {
     const PatchGeometry& p = patches.patch(i);
-    // d = |Δc| − q.diameter/2 ≥ |Δx| − max_diameter/2; a margin keeps rounding on the safe side.
-    const double reach = (kFarthestThatMatters * p.diameter_m + 0.5 * sweep.max_diameter) * 1.001;
-    const auto lo = std::lower_bound(sweep.x.begin(), sweep.x.end(), p.centroid.x - reach);
-    const auto hi = std::upper_bound(sweep.x.begin(), sweep.x.end(), p.centroid.x + reach);
-    double nearest = 1e300;
-    for (auto it = lo; it != hi; ++it) {
-        const std::size_t j = sweep.order[static_cast<std::size_t>(it - sweep.x.begin())];
-        if (j == i) continue;
-        const PatchGeometry& q = patches.patch(j);
-        if (dot(q.normal, p.normal) > 0.9) continue;
-        if (dot(q.centroid - p.centroid, p.normal) <= 1e-9 * p.diameter_m ||
-            dot(p.centroid - q.centroid, q.normal) <= 1e-9 * p.diameter_m) {
-            continue;
-        }
-        const double d = length(q.centroid - p.centroid) - 0.5 * q.diameter_m;
-        nearest = std::min(nearest, std::max(d, 1e-300));
-    }
+    if (!(p.diameter_m > 0)) return 0;
+    // A margin keeps rounding on the safe side.
+    double nearest = kFarthestThatMatters * p.diameter_m * 1.001;
+    tree.visit_near(
+        p.centroid,
+        [&](std::size_t j) {
+            if (j == i) return;
+            const PatchGeometry& q = patches.patch(j);
+            if (dot(q.normal, p.normal) > 0.9) return;
+            if (dot(q.centroid - p.centroid, p.normal) <= 1e-9 * p.diameter_m ||
+                dot(p.centroid - q.centroid, q.normal) <= 1e-9 * p.diameter_m) {
+                return;
+            }
+            const double d = length(q.centroid - p.centroid) - 0.5 * q.diameter_m;
+            nearest = std::min(nearest, std::max(d, 1e-300));
+        },
+        [&] { return nearest; });
     return p.diameter_m / nearest;
 }
 
@@ -92,10 +166,10 @@ std::vector<std::vector<Vec3>> split_in_four(const std::vector<Vec3>& v) {
 
 std::vector<std::vector<QuadraturePoint>> receiver_rules(const PatchMesh& patches) {
     std::vector<std::vector<QuadraturePoint>> rules(patches.size());
-    const SweepOrder sweep(patches);
+    const CentroidTree tree(patches);
     parallel_for(0, patches.size(), [&](std::size_t i) {
         const auto& poly = patches.patch(i).vertices;
-        const double ratio = nearness(patches, sweep, i);
+        const double ratio = nearness(patches, tree, i);
         if (ratio < 0.5) {
             rules[i] = positive_rule(poly, 2);
         } else if (ratio < 1.5) {
