@@ -3,30 +3,14 @@
 // the light the missing links would have carried, whenever the stop comes.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <chrono>
-#include <optional>
-#include <thread>
+#include <string>
 
 #include "reference_csv.h"
 #include "scene_files.h"
+#include "stopping_observers.h"
 
 namespace radiant {
 namespace {
-
-// Cancels the solve as it reports its `round`-th round of linking.
-class CancelAtLinkingRound : public SolveObserver {
-public:
-    CancelAtLinkingRound(CancellationToken& token, int round) : token_(token), round_(round) {}
-    void on_progress(const Progress& p) override {
-        if (p.stage == "form factors" && ++rounds_ == round_) token_.cancel();
-    }
-
-private:
-    CancellationToken& token_;
-    int round_;
-    std::atomic<int> rounds_{0};
-};
 
 struct RoomS2 {
     Scene scene = testing::load_scene(testing::data_path("radiance/room-s2.json"));
@@ -45,8 +29,9 @@ struct RoomS2 {
 };
 
 // Stopped before a link was made (round 1), with a few (12), most (25) or nearly all (30) of
-// them: each answer is short of light (without the estimate covering it, a cut-short solve claimed 0.4 % for an error
-// of 19 %, or made 4.5 times the light its sources emit), and each estimate bounds its error.
+// them: each answer is short of light (without the estimate covering it, a cut-short solve claimed
+// 0.4 % for an error of 19 %, or made 4.5 times the light its sources emit), and each estimate
+// bounds its error.
 TEST(StoppedLinking, TheEstimateCoversTheLightOfTheLinksNotMade) {
     const RoomS2 room;
     const Result full = solve(room.scene, room.options());
@@ -55,7 +40,7 @@ TEST(StoppedLinking, TheEstimateCoversTheLightOfTheLinksNotMade) {
     for (const int round : {1, 12, 15, 20, 25, 30}) {
         SCOPED_TRACE("cancelled at round " + std::to_string(round));
         CancellationToken token;
-        CancelAtLinkingRound observer(token, round);
+        testing::CancelAtStageReport observer(token, "form factors", round);
         const Result r = solve(room.scene, room.options(), &observer, &token);
         ASSERT_EQ(r.status, SolveStatus::stopped) << r.error;
         EXPECT_EQ(r.stop_reason, "cancelled");
@@ -69,38 +54,19 @@ TEST(StoppedLinking, TheEstimateCoversTheLightOfTheLinksNotMade) {
     }
 }
 
-// Holds the solve at its `round`-th round of linking until its time limit (`seconds` after the
-// solve began, which is before the first report) has passed.
-class WaitOutTheLimitAtLinkingRound : public SolveObserver {
-public:
-    WaitOutTheLimitAtLinkingRound(double seconds, int round) : seconds_(seconds), round_(round) {}
-    void on_progress(const Progress& p) override {
-        const auto now = std::chrono::steady_clock::now();
-        if (!first_) first_ = now;
-        if (p.stage == "form factors" && ++rounds_ == round_)
-            std::this_thread::sleep_until(*first_ + std::chrono::duration<double>(seconds_));
-    }
-
-private:
-    double seconds_;
-    int round_;
-    std::optional<std::chrono::steady_clock::time_point> first_;
-    int rounds_ = 0;
-};
-
 // At a time limit, unlike at a cancel, the links made are still swept (for a tenth of the
 // limit): the answer is the links' own, not their first shot's.
 TEST(StoppedLinking, AtTheTimeLimitTheLinksMadeAreStillSwept) {
     const RoomS2 room;
     constexpr int kRound = 20;
     CancellationToken token;
-    CancelAtLinkingRound cancelling(token, kRound);
+    testing::CancelAtStageReport cancelling(token, "form factors", kRound);
     const Result cancelled = solve(room.scene, room.options(), &cancelling, &token);
     ASSERT_EQ(cancelled.status, SolveStatus::stopped) << cancelled.error;
 
     SolveOptions options = room.options();
     options.max_seconds = 1;
-    WaitOutTheLimitAtLinkingRound waiting(1.05, kRound);
+    testing::WaitOutTheLimitAtStageReport waiting(1.05, "form factors", kRound);
     const Result timed = solve(room.scene, options, &waiting);
     ASSERT_EQ(timed.status, SolveStatus::stopped) << timed.error;
     EXPECT_EQ(timed.stop_reason, "the time limit of 1 s");
