@@ -7,6 +7,7 @@
 
 #include "reference_csv.h"
 #include "scene_files.h"
+#include "solution/result_difference.h"
 #include "stopping_observers.h"
 
 namespace radiant {
@@ -52,6 +53,24 @@ TEST(StoppedLinking, TheEstimateCoversTheLightOfTheLinksNotMade) {
         EXPECT_GE(r.stats.error_estimate, error);
         EXPECT_GT(r.stats.error_parts.discretisation, 0);
     }
+}
+
+// Without sensors the estimate is the surfaces' measure: a black receiver whose only link was
+// never made is dark, and measured against itself that showed nothing (0.04 %).
+TEST(StoppedLinking, ADarkReceiverWithoutSensorsIsMeasuredAgainstTheLightItMisses) {
+    const Scene scene = testing::load_scene(testing::data_path("scenes/parallel-squares-d1.json"));
+    SolveOptions options = options_from(scene.settings);
+    options.method = "hierarchical";
+    const Result full = solve(scene, options);
+    ASSERT_EQ(full.status, SolveStatus::converged) << full.error;
+    CancellationToken token;
+    testing::CancelAtStageReport observer(token, "form factors", 1);
+    const Result r = solve(scene, options, &observer, &token);
+    ASSERT_EQ(r.status, SolveStatus::stopped) << r.error;
+    EXPECT_EQ(r.stats.links, 0u);
+    const double error = relative_rms_difference(full, r);
+    EXPECT_GT(error, 0.1);
+    EXPECT_GE(r.stats.error_estimate, error);
 }
 
 // At a time limit, unlike at a cancel, the links made are still swept (for a tenth of the

@@ -405,7 +405,10 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
             with_missing.sensors = gather_sensors(1, true, area > 0 ? filled_irradiance / area : 0);
             system.show_radiosity(light);
         }
-        unlinked = relative_rms_difference(result, with_missing);
+        // Measured against either answer: a dark one (a black receiver whose only link was
+        // never made) measures nothing against itself.
+        unlinked = std::max(relative_rms_difference(result, with_missing),
+                            relative_rms_difference(with_missing, result));
     }
     if (options_.want_mesh) result.mesh = *mesh;
     end_stage("gather", gather);
