@@ -61,6 +61,26 @@ constexpr std::uint64_t kRootMeshVersion = 1;
 constexpr std::uint64_t kEmitterShotMeshVersion = 2;
 constexpr std::uint64_t kLeafMeshVersion = 3;
 
+// `light` with each leaf's missing factor (its patch's front share beyond its links' sum) filled
+// with light of radiosity `fill`.
+HierarchicalSystem::LeafLight with_missing_factors_filled(const ElementTree& tree,
+                                                          const HierarchicalSystem& system,
+                                                          const std::vector<double>& front_share,
+                                                          HierarchicalSystem::LeafLight light,
+                                                          double fill) {
+    for (std::size_t e = 0; e < tree.size(); ++e) {
+        const Element& x = tree[e];
+        if (x.cluster || !x.leaf()) continue;
+        const double missing =
+            std::max(0.0, front_share[static_cast<std::size_t>(x.patch)] - system.factor_sum(e));
+        for (std::size_t c = 0; c < 3; ++c) {
+            light.irradiance[e][c] += missing * fill;
+            light.radiosity[e][c] += x.reflectance[c] * missing * fill;
+        }
+    }
+    return light;
+}
+
 }  // namespace
 
 Result Pipeline::run_hierarchical(const PreparedSolve& input) {
@@ -377,22 +397,17 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     }
     double unlinked = 0;
     if (cut_short) {
-        // Each leaf's missing factor (its patch's front share beyond its links' sum) is light it
-        // did not get: filled at twice the mean radiosity, raised by the interreflections it
-        // would have fed (1 / (1 − ρ̄)), the answer moves by what the estimate must cover.
-        const double fill = kCompletionMargin * criteria.mean_radiosity / (1 - rho_mean);
-        HierarchicalSystem::LeafLight filled = light;
+        // Each leaf's missing factor is light it did not get: filled at twice the mean
+        // radiosity, raised by the interreflections it would have fed (1 / (1 − ρ̄)), the answer
+        // moves by what the estimate must cover.
+        const HierarchicalSystem::LeafLight filled = with_missing_factors_filled(
+            tree, system, front_share, light,
+            kCompletionMargin * criteria.mean_radiosity / (1 - rho_mean));
         double filled_irradiance = 0;
         for (std::size_t e = 0; e < tree.size(); ++e) {
             const Element& x = tree[e];
-            if (x.cluster || !x.leaf()) continue;
-            const double missing = std::max(
-                0.0, front_share[static_cast<std::size_t>(x.patch)] - system.factor_sum(e));
-            for (std::size_t c = 0; c < 3; ++c) {
-                filled.irradiance[e][c] += missing * fill;
-                filled.radiosity[e][c] += x.reflectance[c] * missing * fill;
-            }
-            filled_irradiance += x.area_m2 * photometric(filled.irradiance[e], channels);
+            if (!x.cluster && x.leaf())
+                filled_irradiance += x.area_m2 * photometric(filled.irradiance[e], channels);
         }
         Result with_missing;
         if (result.sensors.empty()) {
