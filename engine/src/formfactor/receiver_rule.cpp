@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/median_split.h"
 #include "parallel/fork_join.h"
 
 namespace radiant {
@@ -72,17 +73,9 @@ private:
             node.max_radius = std::max(node.max_radius, 0.5 * p.diameter_m);
         }
         if (end - begin > kLeafPatches) {
-            const Vec3 extent = node.hi - node.lo;
-            const int axis =
-                extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-            const std::size_t mid = begin + (end - begin) / 2;
-            std::nth_element(order_.begin() + static_cast<std::ptrdiff_t>(begin),
-                             order_.begin() + static_cast<std::ptrdiff_t>(mid),
-                             order_.begin() + static_cast<std::ptrdiff_t>(end),
-                             [&](std::size_t a, std::size_t b) {
-                                 return patches_.patch(a).centroid[axis] <
-                                        patches_.patch(b).centroid[axis];
-                             });
+            const std::size_t mid =
+                split_at_median(order_, begin, end, node.hi - node.lo,
+                                [&](std::size_t i) { return patches_.patch(i).centroid; });
             node.left = build(begin, mid);
             node.right = build(mid, end);
         }

@@ -9,6 +9,7 @@
 #include "formfactor/point_polygon.h"
 #include "formfactor/quadrature.h"
 #include "formfactor/receiver_rule.h"
+#include "geometry/median_split.h"
 #include "geometry/random.h"
 #include "parallel/fork_join.h"
 #include "parallel/per_thread.h"
@@ -104,17 +105,10 @@ int ElementTree::build_clusters(std::vector<int>& items, std::size_t begin, std:
             hi[a] = std::max(hi[a], c[a]);
         }
     }
-    const Vec3 extent = hi - lo;
-    const int axis =
-        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-    const std::size_t mid = begin + (end - begin) / 2;
-    std::nth_element(items.begin() + static_cast<std::ptrdiff_t>(begin),
-                     items.begin() + static_cast<std::ptrdiff_t>(mid),
-                     items.begin() + static_cast<std::ptrdiff_t>(end), [&](int a, int b) {
-                         const Element& ea = elements_[static_cast<std::size_t>(a)];
-                         const Element& eb = elements_[static_cast<std::size_t>(b)];
-                         return ea.lo[axis] + ea.hi[axis] < eb.lo[axis] + eb.hi[axis];
-                     });
+    const std::size_t mid = split_at_median(items, begin, end, hi - lo, [&](int i) {
+        const Element& e = elements_[static_cast<std::size_t>(i)];
+        return (e.lo + e.hi) * 0.5;
+    });
     const int left = build_clusters(items, begin, mid);
     const int right = build_clusters(items, mid, end);
 

@@ -5,6 +5,8 @@
 #include <limits>
 #include <numeric>
 
+#include "geometry/median_split.h"
+
 namespace radiant {
 namespace {
 
@@ -66,17 +68,9 @@ int LightTree::build(std::vector<std::size_t>& order, std::size_t begin, std::si
         nodes_[static_cast<std::size_t>(index)] = node;
         return index;
     }
-    // Median split along the widest extent of the sources' centres.
-    const Vec3 extent = centres.size();
-    const int axis =
-        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-    const std::size_t middle = begin + (end - begin) / 2;
-    std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(begin),
-                     order.begin() + static_cast<std::ptrdiff_t>(middle),
-                     order.begin() + static_cast<std::ptrdiff_t>(end),
-                     [&](std::size_t a, std::size_t b) {
-                         return sources[a].bounds.centre()[axis] < sources[b].bounds.centre()[axis];
-                     });
+    const std::size_t middle =
+        split_at_median(order, begin, end, centres.size(),
+                        [&](std::size_t i) { return sources[i].bounds.centre(); });
     node.left = build(order, begin, middle, sources, index);
     node.right = build(order, middle, end, sources, index);
     nodes_[static_cast<std::size_t>(index)] = node;
