@@ -431,9 +431,14 @@ void Pipeline::grant_sweep_grace(SolverControl& control) const {
     if (extra && now >= *deadline_) control.deadline = now + *extra;
 }
 
-bool Pipeline::should_stop_after_grace() const {
+std::optional<Pipeline::Clock::time_point> Pipeline::graced_deadline() const {
     const std::optional<Clock::duration> extra = grace();
-    return extra ? Clock::now() >= *deadline_ + *extra : should_stop();
+    return extra ? std::optional<Clock::time_point>(*deadline_ + *extra) : deadline_;
+}
+
+bool Pipeline::should_stop_after_grace() const {
+    const std::optional<Clock::time_point> until = graced_deadline();
+    return (cancel_ && cancel_->cancelled()) || (until && Clock::now() >= *until);
 }
 
 void Pipeline::finish_stats(Result& result, const std::string& method, std::size_t patches,
@@ -774,7 +779,8 @@ Result Pipeline::run_dense(const PreparedSolve& solve_input, const std::string& 
         // Leave most of the budget to meshing error.
         SolverControl control = solving_control(
             (matrix_free ? kMatrixFreeSystemShare : kDenseSystemShare) * options_.tolerance);
-        grant_sweep_grace(control);
+        // The rows and their solve share one grace.
+        control.deadline = graced_deadline();
         if (observer_) {
             control.snapshot = [&](const std::array<std::vector<double>, 3>& radiosity) {
                 snapshots_.offer(display_mesh(radiosity), 1);

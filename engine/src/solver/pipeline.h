@@ -149,8 +149,11 @@ private:
     /// limit, at least kMinGraceSeconds); none without a limit, after a cancel or inside another
     /// solve.
     std::optional<Clock::duration> grace() const;
-    /// Gives `control` the grace, from now, once the time limit is reached.
+    /// Gives `control` the grace, from now, once the time limit is reached (a hierarchical
+    /// solve's sweeps, after links made up to the limit).
     void grant_sweep_grace(SolverControl& control) const;
+    /// The time limit with the grace added, if there is a grace; else the time limit.
+    std::optional<Clock::time_point> graced_deadline() const;
     /// should_stop(), with the grace added to the time limit.
     bool should_stop_after_grace() const;
     /// Fills the statistics every method reports alike.
