@@ -258,16 +258,21 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
     // than a share of the tolerance × the mean irradiance (`coarsening` times that for previews),
     // with the luminaires' light or (`with_luminaires` false) without; the mean irradiance is
     // the solution's unless given.
+    // The leaves' area-weighted mean of `irradiance(e)` (photometric).
+    auto mean_leaf_irradiance = [&](auto&& irradiance) {
+        double sum = 0;
+        for (std::size_t e = 0; e < tree.size(); ++e) {
+            const Element& x = tree[e];
+            if (!x.cluster && x.leaf()) sum += x.area_m2 * photometric(irradiance(e), channels);
+        }
+        return area > 0 ? sum / area : 0;
+    };
     auto gather_sensors = [&](double coarsening, bool with_luminaires = true,
                               std::optional<double> given_mean = std::nullopt) {
-        double mean_irradiance = 0;
-        for (std::size_t e = 0; e < tree.size() && !given_mean; ++e) {
-            const Element& x = tree[e];
-            if (x.cluster || !x.leaf()) continue;
-            mean_irradiance +=
-                x.area_m2 * photometric(system.leaf_irradiance(static_cast<int>(e)), channels);
-        }
-        mean_irradiance = given_mean ? *given_mean : area > 0 ? mean_irradiance / area : 0;
+        const double mean_irradiance =
+            given_mean ? *given_mean : mean_leaf_irradiance([&](std::size_t e) {
+                return system.leaf_irradiance(static_cast<int>(e));
+            });
         GatherCriteria gather;
         gather.irradiance_epsilon =
             coarsening * kGatherIrradianceFraction * options_.tolerance * mean_irradiance;
@@ -406,12 +411,6 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
         const HierarchicalSystem::LeafLight filled = with_missing_factors_filled(
             tree, system, front_share, light,
             kCompletionMargin * criteria.mean_radiosity / (1 - rho_mean));
-        double filled_irradiance = 0;
-        for (std::size_t e = 0; e < tree.size(); ++e) {
-            const Element& x = tree[e];
-            if (!x.cluster && x.leaf())
-                filled_irradiance += x.area_m2 * photometric(filled.irradiance[e], channels);
-        }
         Result with_missing;
         if (result.sensors.empty()) {
             with_missing.surfaces =
@@ -421,8 +420,9 @@ Result Pipeline::run_hierarchical(const PreparedSolve& input) {
             // none at all: every node would be opened), and coarser than the answer: its error
             // is a share of the tolerance, the missing light's tens of per cent.
             system.show_radiosity(filled);
-            with_missing.sensors = gather_sensors(kUnlinkedGatherCoarsening, true,
-                                                  area > 0 ? filled_irradiance / area : 0);
+            with_missing.sensors = gather_sensors(
+                kUnlinkedGatherCoarsening, true,
+                mean_leaf_irradiance([&](std::size_t e) { return filled.irradiance[e]; }));
             system.show_radiosity(light);
         }
         // Measured against either answer: a dark one (a black receiver whose only link was

@@ -102,7 +102,8 @@ constexpr double kUncheckedShare = 2;
 // What a solve stopped at its time limit would otherwise answer without a measure of its error
 // may run this share of the limit past it: a hierarchical solve's sweeps of the links it made
 // (unswept they answer with the emitters' first shot only: the furnished office, stopped as its
-// linking ended, 18 % off), Monte Carlo's first round (the samples any estimate is made of).
+// linking ended, 18 % off), Monte Carlo's first round (the samples any estimate is made of),
+// the dense form factor rows and their solve (else the first bounce: room-s2, 24 % off).
 constexpr double kGraceShare = 0.1;
 constexpr double kMinGraceSeconds = 0.5;
 // Mesh versions of refined solutions: above those of either path (dense 1, hierarchical 1–3),
