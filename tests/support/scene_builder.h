@@ -158,6 +158,38 @@ inline std::vector<Polygon> box_faces(Vec3 lo, Vec3 hi, bool facing_in) {
     return faces;
 }
 
+/// A sphere of `rings` × `segments` faces about `centre`, facing out (a bulb): quads between
+/// rings of latitude, triangles at the poles.
+inline Surface sphere_surface(const std::string& name, const std::string& material, Vec3 centre,
+                              double radius, int rings, int segments) {
+    MeshGeometry mesh;
+    const double pi = 3.14159265358979323846;
+    mesh.vertices.push_back(centre + Vec3{0, 0, -radius});
+    for (int r = 1; r < rings; ++r) {
+        const double polar = pi * r / rings;
+        for (int k = 0; k < segments; ++k) {
+            const double a = 2 * pi * k / segments;
+            mesh.vertices.push_back(centre + radius * Vec3{std::sin(polar) * std::cos(a),
+                                                           std::sin(polar) * std::sin(a),
+                                                           -std::cos(polar)});
+        }
+    }
+    mesh.vertices.push_back(centre + Vec3{0, 0, radius});
+    const int top = static_cast<int>(mesh.vertices.size()) - 1;
+    const auto at = [&](int ring, int k) { return 1 + (ring - 1) * segments + (k % segments); };
+    for (int k = 0; k < segments; ++k) {
+        mesh.faces.push_back({0, at(1, k + 1), at(1, k)});
+        for (int r = 1; r + 1 < rings; ++r)
+            mesh.faces.push_back({at(r, k), at(r, k + 1), at(r + 1, k + 1), at(r + 1, k)});
+        mesh.faces.push_back({at(rings - 1, k), at(rings - 1, k + 1), top});
+    }
+    Surface s;
+    s.name = name;
+    s.material = material;
+    s.geometry = std::move(mesh);
+    return s;
+}
+
 /// §2.2 furnace: a closed unit cube whose every face emits E = 1 and reflects ρ: B = 1/(1 − ρ).
 inline Scene furnace_cube(double rho) {
     Scene scene;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "geometry/random.h"
@@ -85,6 +86,10 @@ private:
     /// Source s's light at x: a luminaire exactly, an emitting piece by one point.
     Rgb part(std::size_t s, const Vec3& x, const Vec3& n, const Visibility& visibility,
              SampleStream& rng, std::uint64_t& rays) const;
+    /// One piece of an emitting surface's run of pieces `run` (of pieces_), drawn by its rough
+    /// light at x, its light over its probability.
+    Rgb surface_part(const std::pair<std::size_t, std::size_t>& run, const Vec3& x, const Vec3& n,
+                     const Visibility& visibility, SampleStream& rng, std::uint64_t& rays) const;
     /// Luminaire i's light at x as `receiver` counts it, exactly (one shadow ray).
     Rgb luminaire_at(std::size_t i, const Vec3& x, const SensorReceiver& receiver,
                      const Visibility& visibility, std::uint64_t& rays) const;
@@ -103,6 +108,8 @@ private:
     double epsilon_;
     int component_;
     std::vector<EmittingPiece> pieces_;
+    /// The runs of pieces_ [first, second) that make one emitting surface each.
+    std::vector<std::pair<std::size_t, std::size_t>> surface_runs_;
     std::vector<DirectionTable> tables_;  ///< per luminaire; empty cdf unless photometric
     /// Sources in one list (luminaires first, then emitting pieces) by photometric power.
     std::vector<double> source_power_;

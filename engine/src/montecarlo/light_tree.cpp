@@ -33,6 +33,30 @@ double squared_distance(const Box& b, const Vec3& x) {
     return d2;
 }
 
+// The axis of the cone of fronts of sources [begin, end) of `order`: their mean front, or zero
+// where one may face any way or they cancel.
+Vec3 front_cone_axis(const std::vector<std::size_t>& order, std::size_t begin, std::size_t end,
+                     std::span<const LightTreeSource> sources) {
+    Vec3 sum{0, 0, 0};
+    for (std::size_t i = begin; i < end; ++i) {
+        const Vec3& f = sources[order[i]].normal;
+        if (length_squared(f) == 0) return {0, 0, 0};
+        sum += f;
+    }
+    const double l = length(sum);
+    return l > 1e-9 * static_cast<double>(end - begin) ? sum / l : Vec3{0, 0, 0};
+}
+
+// The cosine of the cone's half angle about `axis` that holds every front; −1 without an axis.
+double front_cone_cosine(const std::vector<std::size_t>& order, std::size_t begin, std::size_t end,
+                         std::span<const LightTreeSource> sources, const Vec3& axis) {
+    if (length_squared(axis) == 0) return -1;
+    double lowest = 1;
+    for (std::size_t i = begin; i < end; ++i)
+        lowest = std::min(lowest, dot(axis, sources[order[i]].normal));
+    return lowest;
+}
+
 }  // namespace
 
 LightTree::LightTree(std::span<const LightTreeSource> sources) {
@@ -62,6 +86,8 @@ int LightTree::build(std::vector<std::size_t>& order, std::size_t begin, std::si
         node.peak_cd += s.peak_cd;
     }
     node.centre = node.power > 0 ? weighted / node.power : centres.centre();
+    node.axis = front_cone_axis(order, begin, end, sources);
+    node.cos_spread = front_cone_cosine(order, begin, end, sources, node.axis);
     if (end - begin == 1) {
         node.source = order[begin];
         leaf_of_[node.source] = index;
@@ -77,19 +103,42 @@ int LightTree::build(std::vector<std::size_t>& order, std::size_t begin, std::si
     return index;
 }
 
+double LightTree::facing(const Node& node, const Vec3& x) const {
+    if (node.cos_spread <= -1) return 1;
+    const Vec3 to_x = x - node.bounds.centre();
+    const double d = length(to_x);
+    const double r = 0.5 * length(node.bounds.size());
+    if (!(d > r)) return 1;
+    // The least angle between any front and any direction from the node to x: the angle from
+    // the axis to x, less the cone's half angle and the angle the bounds' sphere spans from x —
+    // its cosine by the difference formulas, without an inverse trigonometric function.
+    const double cos_axis = std::clamp(dot(node.axis, to_x) / d, -1.0, 1.0);
+    if (cos_axis >= node.cos_spread) return 1;
+    const double sin_axis = std::sqrt(1 - cos_axis * cos_axis);
+    const double sin_spread = std::sqrt(std::max(0.0, 1 - node.cos_spread * node.cos_spread));
+    const double cos_beyond = cos_axis * node.cos_spread + sin_axis * sin_spread;
+    const double sin_beyond = sin_axis * node.cos_spread - cos_axis * sin_spread;
+    const double sin_seen = r / d, cos_seen = std::sqrt(1 - sin_seen * sin_seen);
+    if (cos_beyond >= cos_seen) return 1;
+    return std::max(0.0, cos_beyond * cos_seen + sin_beyond * sin_seen);
+}
+
 double LightTree::bound(const Node& node, const Vec3& x, const Vec3& n) const {
     if (below_horizon(node.bounds, x, n)) return 0;
     const double d2 = squared_distance(node.bounds, x);
-    return d2 > 0 ? node.peak_cd / d2 : kInf;
+    // A Lambertian front's intensity falls as the cosine from its peak.
+    return d2 > 0 ? node.peak_cd * facing(node, x) / d2 : kInf;
 }
 
 double LightTree::cluster_importance(const Node& node, const Vec3& x, const Vec3& n) const {
     if (below_horizon(node.bounds, x, n)) return 0;
+    const double front = facing(node, x);
+    if (!(front > 0)) return 0;
     const Vec3 d = node.centre - x;
     const double d2 = length_squared(d);
     const double r2 = 0.25 * length_squared(node.bounds.size());
     const double cosine = d2 > r2 ? std::max(kMinClusterCosine, dot(n, d) / std::sqrt(d2)) : 1.0;
-    return node.power * cosine / std::max(d2, r2);
+    return node.power * front * cosine / std::max(d2, r2);
 }
 
 LightCut LightTree::cut(const Vec3& x, const Vec3& n, double relative_bound,

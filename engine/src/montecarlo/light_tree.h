@@ -24,6 +24,9 @@ struct LightTreeSource {
     Box bounds;          ///< every point that emits
     double power = 0;    ///< photometric lm
     double peak_cd = 0;  ///< the largest photometric intensity toward any direction (cd)
+    /// An emitting piece's front (unit): it sends light only to the side it faces; zero for a
+    /// source that may send light any way (a luminaire).
+    Vec3 normal{0, 0, 0};
 };
 
 /// The sources near a point, each on its own, and the clusters (tree nodes) of the others.
@@ -64,6 +67,10 @@ private:
         Vec3 centre;  ///< power-weighted
         double power = 0;
         double peak_cd = 0;
+        /// The cone of its sources' fronts: an axis and the cosine of its half angle (−1: they
+        /// may face any way).
+        Vec3 axis{0, 0, 0};
+        double cos_spread = -1;
         int left = -1, right = -1;  ///< children; both -1 for a source's leaf
         int parent = -1;
         std::size_t source = 0;  ///< a leaf's source
@@ -71,6 +78,9 @@ private:
     int build(std::vector<std::size_t>& order, std::size_t begin, std::size_t end,
               std::span<const LightTreeSource> sources, int parent);
     double bound(const Node& node, const Vec3& x, const Vec3& n) const;
+    /// The largest cosine between any source's front in `node` and the direction to x: 1 where
+    /// their fronts may face any way or x is within the bounds' sphere, 0 where all face away.
+    double facing(const Node& node, const Vec3& x) const;
     double cluster_importance(const Node& node, const Vec3& x, const Vec3& n) const;
     template <class Leaf>
     double importance(int node, const Vec3& x, const Vec3& n, const Leaf& leaf) const {
