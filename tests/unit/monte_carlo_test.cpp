@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <variant>
 
 #include "formfactor/point_polygon.h"
@@ -472,6 +473,51 @@ TEST(SensorGather, TheDepthCheckMeasuresWhatAnElementAverageMisses) {
     EXPECT_GT(coarse.depth_difference_squared, 9 * coarse.depth_difference_variance);
     EXPECT_NEAR(std::sqrt(coarse.depth_difference_squared), gap, 3 * noise);
     EXPECT_LT(fine.depth_difference_squared, 9 * fine.depth_difference_variance);
+}
+
+// A lamp in an open shade (a cone of 0.25 m down to 0.05 m, white on both sides, its bulb a
+// point) 0.9 m above a point on a dark floor: the point sees the shade's bright inside in a few
+// rays of a set or none. Rays aimed at the bright sides give the same light, its variance over
+// ray sets a twentieth of what cosine rays alone leave.
+TEST(SensorGather, RaysAimedAtBrightSidesKeepTheMeanAndCutTheSpread) {
+    Scene scene;
+    Material shade = testing::gray("shade", 0.8);
+    shade.two_sided = true;
+    scene.materials = {testing::gray("floor", 0.1), shade};
+    scene.surfaces = {testing::polygon_surface("floor", "floor",
+                                               testing::rect({-2, -2, 0}, {4, 0, 0}, {0, 4, 0}))};
+    MeshGeometry cone;
+    const int segments = 16;
+    for (int k = 0; k < segments; ++k) {
+        const double a = 2 * std::numbers::pi * k / segments;
+        cone.vertices.push_back({0.25 * std::cos(a), 0.25 * std::sin(a), 1.6});
+        cone.vertices.push_back({0.05 * std::cos(a), 0.05 * std::sin(a), 1.85});
+        const int j = (k + 1) % segments;
+        cone.faces.push_back({2 * k, 2 * j, 2 * j + 1, 2 * k + 1});
+    }
+    Surface cone_surface;
+    cone_surface.name = "shade";
+    cone_surface.material = "shade";
+    cone_surface.geometry = std::move(cone);
+    scene.surfaces.push_back(std::move(cone_surface));
+    scene.luminaires.push_back(
+        testing::luminaire("bulb", {0, 0, 1.7}, 1000, Distribution::isotropic));
+    scene.sensors.push_back(testing::sensor_points("below", {{0.2, 0.1, 0.75}}));
+    const PreparedScene prepared = prepare_scene(scene);
+    const ElementMesh mesh(prepared, 0.05);
+    const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
+    const LightSources sources(prepared, visibility->epsilon());
+    PhotonField field(prepared, mesh, 5);
+    const auto never = [] { return false; };
+    field.trace(1 << 20, sources, *visibility, never);
+    SensorGather cosine(prepared, mesh, sources, *visibility, 7);
+    SensorGather aimed(prepared, mesh, sources, *visibility, 7);
+    aimed.aim_at_bright_sides(field, std::size_t{1} << 30);
+    cosine.gather(2000, never);
+    aimed.gather(2000, never);
+    const GatheredPoint a = aimed.evaluate(field).at(0), c = cosine.evaluate(field).at(0);
+    EXPECT_NEAR(a.illuminance, c.illuminance, 4 * std::sqrt(a.gather_variance + c.gather_variance));
+    EXPECT_LT(a.gather_variance, c.gather_variance / 10);
 }
 
 // Two sets of 50 points with the same photon variance per point: in one each point's batches

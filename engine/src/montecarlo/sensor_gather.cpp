@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "geometry/cosine_direction.h"
 #include "montecarlo/channel_product.h"
@@ -61,15 +62,20 @@ SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
 std::size_t SensorGather::bytes_per_point() { return sizeof(Point); }
 
 std::size_t SensorGather::bytes_per_set() const {
-    std::size_t hits = 0, near = 0;
+    std::size_t hits = 0, near = 0, aiming = 0;
     for (const Point& p : points_) {
         hits += p.hits.size();
         near += p.near.size();
+        aiming += p.aimed.empty() ? 0 : 1;
     }
     const double share = hits > 0 ? static_cast<double>(near) / static_cast<double>(hits) : 1.0;
-    return sizeof(double) + kRaysPerSet * sizeof(int) +
-           kRaysPerSet / kDepthCheckEvery * sizeof(FarBounce) +
-           static_cast<std::size_t>(std::ceil(share * kRaysPerSet * sizeof(NearHit)));
+    const double aiming_share =
+        points_.empty() ? 0.0 : static_cast<double>(aiming) / static_cast<double>(points_.size());
+    const double rays = kRaysPerSet + aiming_share * kAimedRaysPerSet;
+    return sizeof(double) + kRaysPerSet / kDepthCheckEvery * sizeof(FarBounce) +
+           static_cast<std::size_t>(
+               std::ceil(rays * (sizeof(int) + share * sizeof(NearHit)) +
+                         aiming_share * (kRaysPerSet + kAimedRaysPerSet) * sizeof(float)));
 }
 
 std::size_t SensorGather::memory_bytes() const {
@@ -77,6 +83,7 @@ std::size_t SensorGather::memory_bytes() const {
     for (const Point& p : points_) {
         bytes += p.set_direct.capacity() * sizeof(double) + p.hits.capacity() * sizeof(int) +
                  p.far.capacity() * sizeof(FarBounce) + p.near.capacity() * sizeof(NearHit) +
+                 p.aimed.capacity() * sizeof(AimedSide) + p.weights.capacity() * sizeof(float) +
                  p.sources.pieces.capacity() * sizeof(std::size_t) +
                  p.sources.clusters.capacity() * sizeof(int);
     }
@@ -126,6 +133,14 @@ SensorGather::FarBounce SensorGather::check_path(const Bounce& first, const Rgb&
     return out;
 }
 
+double SensorGather::balance_weight(const Aim& aimed, const Vec3& n, const Vec3& d, int side,
+                                    double t) const {
+    const double cosine = std::max(0.0, dot(n, d)) / std::numbers::pi;
+    if (!(cosine > 0)) return 0;
+    const double aimed_density = side < 0 ? 0.0 : bright_.density(aimed, side, t, d);
+    return kRaysPerSet * cosine / (kRaysPerSet * cosine + kAimedRaysPerSet * aimed_density);
+}
+
 void SensorGather::gather_point(std::size_t index, Point& point, int sets,
                                 std::uint64_t& rays) const {
     const int channels = scene_.channels;
@@ -139,9 +154,12 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
             sources_.sensor_sources(point.position, receiver, visibility_, !point.background, rays);
         point.luminaires = photometric(point.sources.luminaires, channels);
     }
+    const bool aims = !point.aimed.empty();
+    const auto per_set = static_cast<std::size_t>(point.rays_per_set());
     // Exactly what `sets` need: the memory budget counts them so (bytes_per_set).
     point.set_direct.reserve(static_cast<std::size_t>(sets));
-    point.hits.reserve(static_cast<std::size_t>(sets) * kRaysPerSet);
+    point.hits.reserve(static_cast<std::size_t>(sets) * per_set);
+    if (aims) point.weights.reserve(static_cast<std::size_t>(sets) * per_set);
     point.far.reserve(static_cast<std::size_t>(sets) * kRaysPerSet / kDepthCheckEvery);
     for (int set = static_cast<int>(point.set_direct.size()); set < sets; ++set) {
         SampleStream rng(seed_, stream_, index, static_cast<std::uint64_t>(set));
@@ -153,6 +171,51 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
                                                               set_normal, visibility_, rng, rays),
                                     channels);
         double reflected = 0;
+        // One ray's landing, its light weighed against the aimed rays' where the point aims;
+        // `aimed_side`: the side an aimed ray was drawn on, −1 for a cosine ray; `check`: a far
+        // hit's path goes on (check_path).
+        const auto cast = [&](const Vec3& origin, const Vec3& normal, const Vec3& d, int aimed_side,
+                              bool check) {
+            ++rays;
+            const RayHit hit = visibility_.intersect(origin, d, t_max);
+            const int side = hit.triangle < 0 ? -1 : mesh_.side_hit(hit.triangle, d);
+            // An aimed ray that lands elsewhere drew a point the sensor does not see.
+            const double weight = !aims ? 1.0
+                                  : aimed_side >= 0 && side != aimed_side
+                                      ? 0.0
+                                      : balance_weight(point.aimed, normal, d, side, hit.t);
+            if (aims) point.weights.push_back(static_cast<float>(weight));
+            if (side < 0 || !(weight > 0)) {
+                point.hits.push_back(-1);
+                return;
+            }
+            const MeshElement& e = mesh_[static_cast<std::size_t>(hit.triangle)];
+            const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
+            const Vec3 n = mesh_.side_normal(side);
+            const Vec3 x = origin + d * hit.t;
+            const Rgb h = sources_.direct_at(x, n, visibility_, rng, rays);
+            reflected += weight * photometric(times(rho, h), channels);
+            // One bounce further, where the element's average is not the light of this spot:
+            // always for a near hit; for a far one only to measure what the average misses
+            // (check_path).
+            const bool far = hit.t >= kNearHit * std::sqrt(e.area_m2);
+            if (far && !check) {
+                point.hits.push_back(side);
+                return;
+            }
+            const Bounce further = bounce(x, n, rng, rays);
+            if (far) {
+                point.hits.push_back(side);
+                point.far.push_back(check_path(further, rho, rng, rays));
+                return;
+            }
+            if (further.side >= 0)
+                reflected +=
+                    weight *
+                    photometric(times(rho, times(further.reflectance, further.direct)), channels);
+            point.hits.push_back(-2 - static_cast<int>(point.near.size()));
+            point.near.push_back({side, further.side});
+        };
         for (int k = 0; k < kRaysPerSet; ++k) {
             const Vec3 normal =
                 fixed ? fixed_normal
@@ -161,41 +224,47 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
             const double r1 = (k / kStrata + rng.next()) / kStrata;
             const double r2 = (k % kStrata + rng.next()) / kStrata;
             const Vec3 d = cosine_direction(normal, r1, r2);
-            ++rays;
-            const RayHit hit = visibility_.intersect(origin, d, t_max);
-            const int side = hit.triangle < 0 ? -1 : mesh_.side_hit(hit.triangle, d);
-            if (side < 0) {
-                point.hits.push_back(-1);
-                continue;
+            cast(origin, normal, d, -1, checks_depth(k));
+        }
+        if (aims) {
+            const Vec3 origin = point.position + fixed_normal * eps;
+            // In strata of the sides' probabilities, as the cosine rays are in strata of the
+            // hemisphere.
+            for (int k = 0; k < kAimedRaysPerSet; ++k) {
+                const AimedRay ray =
+                    bright_.draw(point.aimed, origin, rng, (k + rng.next()) / kAimedRaysPerSet);
+                if (dot(fixed_normal, ray.direction) > 0) {
+                    cast(origin, fixed_normal, ray.direction, ray.side, false);
+                } else {  // behind the sensor: nothing to cast
+                    point.weights.push_back(0);
+                    point.hits.push_back(-1);
+                }
             }
-            const MeshElement& e = mesh_[static_cast<std::size_t>(hit.triangle)];
-            const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
-            const Vec3 n = mesh_.side_normal(side);
-            const Vec3 x = origin + d * hit.t;
-            const Rgb h = sources_.direct_at(x, n, visibility_, rng, rays);
-            reflected += photometric(times(rho, h), channels);
-            // One bounce further, where the element's average is not the light of this spot:
-            // always for a near hit; for a far one only to measure what the average misses
-            // (check_path).
-            const bool far = hit.t >= kNearHit * std::sqrt(e.area_m2);
-            if (far && !checks_depth(k)) {
-                point.hits.push_back(side);
-                continue;
-            }
-            const Bounce further = bounce(x, n, rng, rays);
-            if (far) {
-                point.hits.push_back(side);
-                point.far.push_back(check_path(further, rho, rng, rays));
-                continue;
-            }
-            if (further.side >= 0)
-                reflected +=
-                    photometric(times(rho, times(further.reflectance, further.direct)), channels);
-            point.hits.push_back(-2 - static_cast<int>(point.near.size()));
-            point.near.push_back({side, further.side});
         }
         point.set_direct.push_back(direct + reflected / kRaysPerSet);
     }
+}
+
+void SensorGather::aim_at_bright_sides(const PhotonField& field, std::size_t max_bytes) {
+    bright_ = BrightSides(scene_, mesh_, field);
+    if (bright_.empty()) return;
+    const std::size_t before = aims_bytes();
+    parallel_for(0, points_.size(), [&](std::size_t i) {
+        Point& p = points_[i];
+        if (p.set_direct.empty() && p.receiver.fixed() && !p.background)
+            p.aimed = bright_.aim(p.position, p.receiver.normal_at(0));
+    });
+    if (aims_bytes() - before <= max_bytes) return;
+    // Aiming only saves rays: where its lists do not fit, the points do without.
+    for (Point& p : points_) {
+        if (p.set_direct.empty()) Aim().swap(p.aimed);
+    }
+}
+
+std::size_t SensorGather::aims_bytes() const {
+    std::size_t bytes = 0;
+    for (const Point& p : points_) bytes += p.aimed.capacity() * sizeof(AimedSide);
+    return bytes;
 }
 
 std::uint64_t SensorGather::gather(int sets, const std::function<bool()>& stop) {
@@ -272,7 +341,7 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
         };
         // The field's light reflected at `side` toward the point; a near hit's, through the
         // reflectance of the first surface (`first`, else none).
-        auto land = [&](int side, int first) {
+        auto land = [&](int side, int first, double weight) {
             const int twin = sibling_side(side);
             const double a = area(side), b = area(twin);
             // Never 0/0, even for a sliver whose area rounds to nothing.
@@ -291,25 +360,28 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
                              : photometric(times(rho, reflected[static_cast<std::size_t>(twin)]),
                                            channels);
             }
-            fine += value;
-            coarse += wa * value + wb * value_twin;
+            fine += weight * value;
+            coarse += weight * (wa * value + wb * value_twin);
             for (int q = 0; q < kBatches; ++q) {
-                const double f = scale * field.batch_reflected(side, q);
+                const double f = weight * scale * field.batch_reflected(side, q);
                 batch[static_cast<std::size_t>(q)] += f;
                 batch_coarse[static_cast<std::size_t>(q)] +=
                     twin < 0 ? f : wa * f + wb * scale * field.batch_reflected(twin, q);
             }
         };
+        const int per_set = p.rays_per_set();
         for (int j = 0; j < sets; ++j) {
             fine = 0;
-            for (int k = 0; k < kRaysPerSet; ++k) {
-                const int code = p.hits[static_cast<std::size_t>(j * kRaysPerSet + k)];
+            for (int k = 0; k < per_set; ++k) {
+                const auto ray = static_cast<std::size_t>(j * per_set + k);
+                const int code = p.hits[ray];
+                const double weight = p.weights.empty() ? 1.0 : p.weights[ray];
                 if (code >= 0) {
-                    land(code, -1);
-                    if (checks_depth(k)) check_depth(code);
+                    land(code, -1, weight);
+                    if (k < kRaysPerSet && checks_depth(k)) check_depth(code);
                 } else if (code <= -2) {
                     const NearHit& near = p.near[static_cast<std::size_t>(-2 - code)];
-                    if (near.second >= 0) land(near.second, near.first);
+                    if (near.second >= 0) land(near.second, near.first, weight);
                 }
             }
             fine_sum += fine;

@@ -6,7 +6,9 @@
 // field's indirect irradiance on the element; a ray that lands nearer than its element's size (a
 // point beside a stack of books) bounces once more, as the element's average is not the light of
 // that spot. The rays and the direct light are kept, so a denser photon field re-prices them
-// without casting them again.
+// without casting them again. Where sides far brighter than the room face a point (the inside
+// of a lamp's shade), a few rays per set aim at them, weighed against the cosine rays by the
+// balance heuristic (see BrightSides).
 //
 // Each point's error has three parts, all measured from the data:
 //   gather noise   the spread of its ray sets;
@@ -23,6 +25,7 @@
 #include <functional>
 #include <vector>
 
+#include "montecarlo/bright_sides.h"
 #include "montecarlo/element_mesh.h"
 #include "montecarlo/light_sources.h"
 #include "montecarlo/photon_field.h"
@@ -51,6 +54,8 @@ struct GatheredPoint {
 class SensorGather {
 public:
     static constexpr int kRaysPerSet = 64;  ///< 8 × 8 strata of the cosine-weighted hemisphere
+    /// Rays per set aimed at bright sides, besides the cosine rays, at points that aim.
+    static constexpr int kAimedRaysPerSet = 16;
 
     /// What a gather measures: the sensor points, in the order of the sets; or the UGR
     /// observers' eyes, each facing its line of sight and gathering all light but the
@@ -63,6 +68,12 @@ public:
     /// Casts ray sets until every point has `sets` of them; the exact luminaire light comes with
     /// the first. Returns the rays cast. Parallel over points; deterministic.
     std::uint64_t gather(int sets, const std::function<bool()>& stop);
+    /// Points not gathered yet aim part of their rays at the bright sides of `field` (the
+    /// sensors' fixed-normal points; not the eyes, nor receivers that average their normal), if
+    /// all points' aims take at most `max_bytes`; else none aims.
+    void aim_at_bright_sides(const PhotonField& field, std::size_t max_bytes);
+    /// What the points' aims hold.
+    std::size_t aims_bytes() const;
     int sets() const { return sets_; }
     std::size_t points() const { return points_.size(); }
 
@@ -104,6 +115,13 @@ private:
         std::vector<NearHit> near{};
         /// per far hit of a ray that checks its depth, in the order of `hits`: the path beyond
         std::vector<FarBounce> far{};
+        /// The bright sides the point aims at (none: cosine rays only), set before its first set.
+        Aim aimed{};
+        /// With aimed sides, per ray in the order of `hits`: its balance-heuristic weight.
+        std::vector<float> weights{};
+        int rays_per_set() const {
+            return aimed.empty() ? kRaysPerSet : kRaysPerSet + kAimedRaysPerSet;
+        }
     };
     /// Where a cosine-distributed ray from a hit lands, and what lights that spot directly.
     struct Bounce {
@@ -119,6 +137,10 @@ private:
     FarBounce check_path(const Bounce& first, const Rgb& rho, SampleStream& rng,
                          std::uint64_t& rays) const;
     void gather_point(std::size_t index, Point& point, int sets, std::uint64_t& rays) const;
+    /// The weight of a ray in unit direction d from a point with unit normal n that aims at
+    /// `aimed`, landing on `side` (−1: none) at distance t: the cosine rays' density over the
+    /// sum of both kinds' (balance heuristic).
+    double balance_weight(const Aim& aimed, const Vec3& n, const Vec3& d, int side, double t) const;
 
     const PreparedScene& scene_;
     const ElementMesh& mesh_;
@@ -127,6 +149,7 @@ private:
     std::uint64_t seed_;
     std::uint64_t stream_;  ///< keys the points' samples: the eyes' apart from the sensors'
     std::vector<Point> points_;
+    BrightSides bright_;
     int sets_ = 0;
 };
 

@@ -170,7 +170,7 @@ std::size_t level_bytes(const ElementCount& count, std::size_t points, std::size
         (count.elements * kDisplayBytesPerElement + count.sides * sizeof(SolvedElement));
     const std::size_t per_component =
         count.sides * PhotonField::kBytesPerSide + surface_tallies +
-        points * (SensorGather::bytes_per_point() + 3 * kHeapBlockBytes + sizeof(GatheredPoint));
+        points * (SensorGather::bytes_per_point() + 4 * kHeapBlockBytes + sizeof(GatheredPoint));
     return count.elements * (sizeof(MeshElement) + kEmbreeBytesPerTriangle) +
            count.sides * sizeof(ElementSide) + components * per_component +
            PhotonField::wave_bytes(survival) + source_lists + std::max(build, display);
@@ -433,6 +433,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     }
     MemoryHold level_hold(*memory_, bytes_of(count));
     MemoryHold sets_hold(*memory_, 0);
+    MemoryHold aims_hold(*memory_, 0);  // the sensor points' aimed sides (SensorGather)
     // Each level's first round: the same share of the samples asked at tolerance 0.01.
     const double share = std::min(1.0, std::pow(kInitialTolerance / options_.tolerance, 2));
     const int initial_sets = first_round_sets(share, set_sizes);
@@ -441,6 +442,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         Clock::time_point stage_start = Clock::now();
         report("meshing", 0.02, rounds, estimate_so_far(reported));
         level.reset();  // the finer level replaces it (its estimate was held in its place)
+        aims_hold.resize(0);
         measured = false;
         std::uint64_t meshing_rays = 0;
         level = std::make_unique<MonteCarloLevel>(
@@ -473,7 +475,16 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                     light->sources, *level->visibility, stop);
                 rays_ += photon_rays;
                 photons.rays += photon_rays;
+                // The first field shows which sides are bright enough to aim rays at, where
+                // the aims fit in memory.
+                if (light->gather.sets() == 0) {
+                    light->gather.aim_at_bright_sides(
+                        light->field, memory_->available_bytes() + aims_hold.bytes());
+                }
             }
+            std::size_t aims_bytes = 0;
+            for (const auto& light : level->lights) aims_bytes += light->gather.aims_bytes();
+            aims_hold.resize(aims_bytes);
             photons.seconds += seconds_since(stage_start);
             // Stage: gather — the sensors' and eyes' ray sets, to this round's budget, as far as
             // they fit.
