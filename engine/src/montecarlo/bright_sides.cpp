@@ -27,44 +27,46 @@ BrightSides::BrightSides(const PreparedScene& scene, const ElementMesh& mesh,
                          const PhotonField& field)
     : mesh_(&mesh), mean_reflected_(field.mean_reflected()) {
     if (!(mean_reflected_ > 0)) return;
-    std::vector<std::pair<double, Bright>> found;
+    std::vector<Bright> found;
     for (std::size_t s = 0; s < mesh.sides().size(); ++s) {
         const int side = static_cast<int>(s);
-        const MeshElement& e = mesh[static_cast<std::size_t>(mesh.sides()[s].element)];
+        const MeshElement& e = element(side);
         const Rgb& rho = scene.materials[static_cast<std::size_t>(e.material)].reflectance;
         const double b = photometric(times(rho, field.total(side)), scene.channels);
-        if (b > kBrightOverMean * mean_reflected_ && e.area_m2 > 0)
-            found.push_back({b * e.area_m2, {side, b}});
+        if (b > kBrightOverMean * mean_reflected_ && e.area_m2 > 0) {
+            found.push_back({side, (e.triangle.a + e.triangle.b + e.triangle.c) / 3.0,
+                             mesh.side_normal(side), e.area_m2, b * e.area_m2});
+        }
     }
     const std::size_t kept = std::min(found.size(), kMaxBrightSides);
     std::partial_sort(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(kept), found.end(),
-                      [](const auto& a, const auto& b) {
-                          return a.first > b.first ||
-                                 (a.first == b.first && a.second.side < b.second.side);
+                      [](const Bright& a, const Bright& b) {
+                          return a.power > b.power || (a.power == b.power && a.side < b.side);
                       });
-    for (std::size_t i = 0; i < kept; ++i) sides_.push_back(found[i].second);
+    found.resize(kept);
+    sides_ = std::move(found);
 }
 
 Aim BrightSides::aim(const Vec3& x, const Vec3& n) const {
     std::vector<std::pair<double, int>> light;
     for (const Bright& b : sides_) {
-        const MeshElement& e = element(b.side);
-        const Vec3 d = (e.triangle.a + e.triangle.b + e.triangle.c) / 3.0 - x;
+        const Vec3 d = b.centre - x;
         const double d2 = length_squared(d);
-        const double cos_x = dot(n, d), cos_s = -dot(mesh_->side_normal(b.side), d);
+        const double cos_x = dot(n, d), cos_s = -dot(b.normal, d);
         if (!(cos_x > 0 && cos_s > 0 && d2 > 0)) continue;
         // Roughly the irradiance the side sends to x: B A cos cos / (π r²), its r² kept at least
         // the side's area so that a side x nearly touches does not take every aimed ray.
-        const double r2 = std::max(d2, e.area_m2);
         light.push_back(
-            {b.radiosity * e.area_m2 * (cos_x * cos_s / d2) / (std::numbers::pi * r2), b.side});
+            {b.power * (cos_x * cos_s / d2) / (std::numbers::pi * std::max(d2, b.area)), b.side});
     }
-    const std::size_t kept = std::min(light.size(), kMaxAimed);
-    std::partial_sort(light.begin(), light.begin() + static_cast<std::ptrdiff_t>(kept), light.end(),
-                      [](const auto& a, const auto& b) {
-                          return a.first > b.first || (a.first == b.first && a.second < b.second);
-                      });
-    light.resize(kept);
+    if (light.size() > kMaxAimed) {
+        std::nth_element(light.begin(), light.begin() + static_cast<std::ptrdiff_t>(kMaxAimed),
+                         light.end(), [](const auto& a, const auto& b) {
+                             return a.first > b.first ||
+                                    (a.first == b.first && a.second < b.second);
+                         });
+        light.resize(kMaxAimed);
+    }
     double total = 0;
     for (const auto& l : light) total += l.first;
     Aim out;

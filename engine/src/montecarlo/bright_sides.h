@@ -61,9 +61,13 @@ public:
     double density(const Aim& aimed, int side, double t, const Vec3& d) const;
 
 private:
+    /// What aim() weighs of a bright side, kept together: every point reads every side.
     struct Bright {
         int side = 0;
-        double radiosity = 0;  ///< photometric, lm/m²
+        Vec3 centre;
+        Vec3 normal;       ///< the side's front
+        double area = 0;   ///< m²
+        double power = 0;  ///< photometric lm: radiosity × area
     };
     const MeshElement& element(int side) const {
         return (*mesh_)[static_cast<std::size_t>(

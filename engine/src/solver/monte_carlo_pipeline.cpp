@@ -475,19 +475,22 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                     light->sources, *level->visibility, stop);
                 rays_ += photon_rays;
                 photons.rays += photon_rays;
-                // The first field shows which sides are bright enough to aim rays at, where
-                // the aims fit in memory.
+            }
+            photons.seconds += seconds_since(stage_start);
+            // Stage: gather — the sensors' and eyes' ray sets, to this round's budget, as far as
+            // they fit. The first field shows which sides are bright enough to aim rays at,
+            // where the aims fit in memory.
+            stage_start = Clock::now();
+            std::size_t aims_bytes = 0;
+            for (const auto& light : level->lights) {
                 if (light->gather.sets() == 0) {
                     light->gather.aim_at_bright_sides(
                         light->field, memory_->available_bytes() + aims_hold.bytes());
                 }
+                aims_bytes += light->gather.aims_bytes();
             }
-            std::size_t aims_bytes = 0;
-            for (const auto& light : level->lights) aims_bytes += light->gather.aims_bytes();
             aims_hold.resize(aims_bytes);
-            photons.seconds += seconds_since(stage_start);
-            // Stage: gather — the sensors' and eyes' ray sets, to this round's budget, as far as
-            // they fit.
+            gathering.seconds += seconds_since(stage_start);
             const std::size_t wanted_bytes = sets_bytes(*level, RaySets::budgeted);
             const std::size_t room_bytes = memory_->available_bytes() + sets_hold.bytes();
             bool sets_cut = false;
