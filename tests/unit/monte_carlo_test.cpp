@@ -334,6 +334,36 @@ TEST(MonteCarlo, PointsInAPenumbraGetThePanelsExactLight) {
         << describe(r);
 }
 
+// A bulb modelled as a sphere of 96 faces in a black room: its direct light at points below is
+// the exact sum of its facing faces' factors (RADIANCE reads such a bulb 2–9 % dark, see
+// tests/bench/results/living-room.md). Its pieces are more than a sensor's cut holds one by one,
+// so most of them are drawn from clusters whose fronts face every way.
+TEST(MonteCarlo, ABulbOfManyFacesGivesTheExactSumOfTheirLight) {
+    const double exitance = 50000;
+    Scene scene;
+    scene.materials = {testing::gray("black", 0), testing::gray("bulb", 0, exitance)};
+    scene.surfaces = testing::closed_room(4, 4, 3, "black");
+    scene.surfaces.push_back(testing::sphere_surface("bulb", "bulb", {2, 2, 1.7}, 0.05, 8, 12));
+    const std::vector<Vec3> points{{2.3, 1.6, 0.75}, {2, 2, 0.75}, {1.1, 2.4, 0.75}};
+    scene.sensors.push_back(testing::sensor_points("table", points));
+    const PreparedScene prepared = prepare_scene(scene);
+    std::vector<double> exact;
+    for (const Vec3& p : points) {
+        const Vec3 x = p - prepared.world_origin;
+        double sum = 0;
+        for (const Piece& piece : prepared.pieces) {
+            if (prepared.surface_names[static_cast<std::size_t>(piece.surface)] == "bulb")
+                sum += exitance *
+                       front_point_to_polygon_factor(x, {0, 0, 1}, piece.vertices, piece.normal);
+        }
+        exact.push_back(sum);
+    }
+    const Result r = testing::solve_with(scene, "monte-carlo", 0.002);
+    ASSERT_EQ(r.status, SolveStatus::converged) << describe(r);
+    EXPECT_LE(rms_relative_error(r.sensors.at(0).illuminance, exact), r.stats.error_estimate)
+        << describe(r);
+}
+
 // Without sensors the error is stated on the surfaces' means, which have no discretisation part
 // (photons reflect from where they land) and no ray sets: only the photons' noise. A furnace's
 // six faces each receive E / (1 − ρ).
