@@ -37,9 +37,11 @@ public:
     /// Direct irradiance (lux, per channel) at x with unit normal n: every luminaire exactly,
     /// with one shadow ray each; every emitting piece by its exact unoccluded factor times the
     /// visibility of one point drawn on it, which never exceeds the unoccluded light (no
-    /// outliers next to a panel). With many sources (a floor of rooms) a few are drawn from the
-    /// light tree by what each would roughly send to x unoccluded, mixed with a draw by power
-    /// so that none that could light x is never drawn. Counts rays into `rays`.
+    /// outliers next to a panel). With many pieces in few emitting surfaces (bulbs modelled as
+    /// spheres), one piece of each surface is drawn; with many surfaces (a floor of rooms) a few
+    /// sources are drawn from the light tree. Either draw goes by what each would roughly send
+    /// to x unoccluded, mixed with a draw by power so that none that could light x is never
+    /// drawn. Counts rays into `rays`.
     Rgb direct_at(const Vec3& x, const Vec3& n, const Visibility& visibility, SampleStream& rng,
                   std::uint64_t& rays) const;
 
