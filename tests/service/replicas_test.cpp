@@ -79,34 +79,41 @@ TEST_F(ReplicasTest, ThirtyJobsEndDoneOnceThoughTheReplicaRunningOneIsKilledTwic
     std::mt19937 random(seed);
     std::vector<std::string> ids;
     std::vector<std::string> killed_jobs;
+    int replaced = 0;
     for (int kill = 0; kill < 2; ++kill) {
         // Half the jobs before each kill: 30 short jobs at once could all be done before the
         // second kill found one running.
         for (int i = 0; i < 15; ++i) {
             ids.push_back(post(*replicas[random() % replicas.size()], room()));
         }
-        // A job running now, and the replica running it (its lease owner).
-        std::vector<std::string> running;
-        const auto deadline = std::chrono::steady_clock::now() + 30s;
-        while (running.empty() && std::chrono::steady_clock::now() < deadline) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(random() % 200));
-            running = query(
-                "SELECT id, lease_owner FROM jobs WHERE status = 'running' ORDER BY random()"
-                " LIMIT 1");
+        // Kill the replica running a job. A short job may end between the query and the kill,
+        // leaving its replica idle when it dies: then it held nothing, and the next one is tried.
+        std::vector<std::string> held;
+        std::size_t index = 0;
+        for (int attempt = 0; attempt < 5 && held.empty(); ++attempt) {
+            // A job running now, and the replica running it (its lease owner).
+            std::vector<std::string> running;
+            const auto deadline = std::chrono::steady_clock::now() + 30s;
+            while (running.empty() && std::chrono::steady_clock::now() < deadline) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(random() % 200));
+                running = query(
+                    "SELECT id, lease_owner FROM jobs WHERE status = 'running' ORDER BY random()"
+                    " LIMIT 1");
+            }
+            ASSERT_EQ(running.size(), 2u) << "no job ran";
+            const auto victim = std::find(names.begin(), names.end(), running[1]);
+            ASSERT_NE(victim, names.end()) << running[1];
+            index = static_cast<std::size_t>(victim - names.begin());
+            replicas[index]->stop(SIGKILL);
+            // The job it held when it died (maybe a later one than `running`).
+            held = query("SELECT id FROM jobs WHERE status = 'running' AND lease_owner = '" +
+                         running[1] + "'");
+            // A fresh replica takes the dead one's place (a new name: a new process).
+            names[index] = "r" + std::to_string(names.size() + replaced++);
+            replicas[index] = start(names[index]);
         }
-        ASSERT_EQ(running.size(), 2u) << "no job ran";
-        const auto victim = std::find(names.begin(), names.end(), running[1]);
-        ASSERT_NE(victim, names.end()) << running[1];
-        const std::size_t index = static_cast<std::size_t>(victim - names.begin());
-        replicas[index]->stop(SIGKILL);
-        // The job it held when it died (maybe a later one than `running`: jobs are short).
-        const std::vector<std::string> held = query(
-            "SELECT id FROM jobs WHERE status = 'running' AND lease_owner = '" + running[1] + "'");
-        ASSERT_EQ(held.size(), 1u) << "the killed replica held no job";
+        ASSERT_EQ(held.size(), 1u) << "no killed replica held a job";
         killed_jobs.push_back(held[0]);
-        // A fresh replica takes the dead one's place (a new name: a new process).
-        names[index] = "r" + std::to_string(names.size() + kill);
-        replicas[index] = start(names[index]);
         // The same job is not killed twice: each kill costs it an attempt.
         ASSERT_EQ(wait_for(*replicas[(index + 1) % 3], held[0], "done", 30)["status"], "done");
     }
