@@ -226,6 +226,83 @@ TEST(LightSources, SampleTheExactDirectLightOfManySourcesOnAverage) {
     }
 }
 
+// Past max_nodes a cut splits only the nodes `seen` lets it: seeing none, it is the cut of
+// max_nodes; seeing all, the cut of max_seen_nodes; seeing some, a cut in between that still
+// holds every source once.
+TEST(LightTree, PastMaxNodesOnlySeenNodesAreSplit) {
+    const std::vector<LightTreeSource> sources = scattered_sources(300);
+    const LightTree tree(sources);
+    const Vec3 x{5, 5, 0.8}, n{0, 0, 1};
+    const auto same = [](const LightCut& a, const LightCut& b) {
+        return a.sources == b.sources && a.clusters == b.clusters;
+    };
+    const LightCut small = tree.cut(x, n, 0.001, 8), large = tree.cut(x, n, 0.001, 64);
+    ASSERT_GT(large.sources.size(), small.sources.size());
+    EXPECT_TRUE(same(tree.cut(x, n, 0.001, 8, 64, [](int) { return false; }), small));
+    EXPECT_TRUE(same(tree.cut(x, n, 0.001, 8, 64, [](int) { return true; }), large));
+    std::vector<int> asked;
+    const LightCut some = tree.cut(x, n, 0.001, 8, 64, [&](int node) {
+        asked.push_back(node);
+        return node % 2 == 0;
+    });
+    EXPECT_FALSE(asked.empty());
+    EXPECT_LE(some.sources.size() + some.clusters.size(), 64u);
+    EXPECT_GT(some.sources.size() + some.clusters.size(), 8u);
+    // Still every source once (all are in front of x): on its own or in one cluster.
+    std::map<std::size_t, int> times;
+    for (const std::size_t source : some.sources) ++times[source];
+    for (const int c : some.clusters) {
+        std::map<std::size_t, bool> reached;
+        for (int k = 0; k < 20000; ++k) {
+            double p = 0;
+            reached[tree.draw_by_power(c, (k + 0.5) / 20000, p)] = true;
+        }
+        for (const auto& [source, yes] : reached) ++times[source];
+    }
+    EXPECT_EQ(times.size(), sources.size());
+    for (const auto& [source, count] : times) EXPECT_EQ(count, 1) << "source " << source;
+}
+
+// A lamp: a bulb of 96 faces in a black shade open below, and a sensor below and beside it
+// that sees half the bulb's lower half through the opening, with a second such lamp farther
+// off. The sensor's cut lists the pieces it sees on their own (a cluster drawn by power spent
+// most draws on pieces the shade hides or that face away: a spread of 8.8 % of the light per
+// set, where it is now 0.7 %).
+TEST(LightSources, ASensorBesideALampsBulbSamplesEachPieceItSees) {
+    Scene scene;
+    scene.materials = {testing::gray("black", 0), testing::gray("bulb", 0, 20000)};
+    for (const double at : {0.0, 1.5}) {
+        scene.surfaces.push_back(
+            testing::sphere_surface("bulb " + std::to_string(at), "bulb", {at, 0, 2}, 0.1, 8, 12));
+        // The shade: a black box around the bulb's upper part, without a bottom.
+        const Vec3 lo{at - 0.2, -0.2, 1.95};
+        const double w = 0.4, h = 0.35;
+        const std::vector<Polygon> sides = {
+            testing::rect(lo + Vec3{0, 0, h}, {w, 0, 0}, {0, w, 0}),
+            testing::rect(lo, {w, 0, 0}, {0, 0, h}), testing::rect(lo, {0, w, 0}, {0, 0, h}),
+            testing::rect(lo + Vec3{w, 0, 0}, {0, w, 0}, {0, 0, h}),
+            testing::rect(lo + Vec3{0, w, 0}, {w, 0, 0}, {0, 0, h})};
+        for (std::size_t k = 0; k < sides.size(); ++k) {
+            scene.surfaces.push_back(testing::polygon_surface(
+                "shade " + std::to_string(at) + " " + std::to_string(k), "black", sides[k]));
+        }
+    }
+    const PreparedScene prepared = prepare_scene(scene);
+    const ElementMesh mesh(prepared, 1.0);
+    const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
+    const LightSources sources(prepared, visibility->epsilon());
+    const Vec3 x = Vec3{0.5, 0.1, 0.8} - prepared.world_origin, up{0, 0, 1};
+    std::uint64_t rays = 0;
+    const LightSources::SensorSources seen =
+        sources.sensor_sources(x, SensorReceiver(SensorKind::planar, up), *visibility, true, rays);
+    const Mean at_sensor = mean_of(4000, [&](int k) {
+        SampleStream rng(23, 0, static_cast<std::uint64_t>(k));
+        return sources.sensor_set_light(seen, x, up, *visibility, rng, rays)[0];
+    });
+    ASSERT_GT(at_sensor.mean, 0);
+    EXPECT_LT(at_sensor.standard_error * std::sqrt(4000.0), 0.02 * at_sensor.mean);
+}
+
 // Two bulbs of 96 faces, one of them shut in a black box: at the point below the open one, each
 // emitting surface gets a draw of its own among its pieces, and no draw is spent on the shut
 // bulb's pieces that the box hides (drawn from both bulbs' 192 pieces at once, half the draws

@@ -83,6 +83,9 @@ private:
 
     /// Roughly what source `s` sends to x unoccluded (photometric), for drawing sources.
     double rough_light(std::size_t s, const Vec3& x, const Vec3& n) const;
+    /// A point of source `s` for probing whether it is seen: a luminaire's centre, a piece's
+    /// centroid just in front of it.
+    Vec3 source_point(std::size_t s) const;
     Vec3 point_on(const EmittingPiece& e, double r1, double r2, double r3) const;
     Vec3 luminaire_direction(std::size_t luminaire, SampleStream& rng, double& weight) const;
     /// Source s's light at x: a luminaire exactly, an emitting piece by one point.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 
@@ -88,6 +89,9 @@ int LightTree::build(std::vector<std::size_t>& order, std::size_t begin, std::si
     node.centre = node.power > 0 ? weighted / node.power : centres.centre();
     node.axis = front_cone_axis(order, begin, end, sources);
     node.cos_spread = front_cone_cosine(order, begin, end, sources, node.axis);
+    node.sin_spread = std::sqrt(std::max(0.0, 1 - node.cos_spread * node.cos_spread));
+    node.sphere_centre = node.bounds.centre();
+    node.sphere_radius = 0.5 * length(node.bounds.size());
     if (end - begin == 1) {
         node.source = order[begin];
         leaf_of_[node.source] = index;
@@ -105,9 +109,9 @@ int LightTree::build(std::vector<std::size_t>& order, std::size_t begin, std::si
 
 double LightTree::facing(const Node& node, const Vec3& x) const {
     if (node.cos_spread <= -1) return 1;
-    const Vec3 to_x = x - node.bounds.centre();
+    const Vec3 to_x = x - node.sphere_centre;
     const double d = length(to_x);
-    const double r = 0.5 * length(node.bounds.size());
+    const double r = node.sphere_radius;
     if (!(d > r)) return 1;
     // The least angle between any front and any direction from the node to x: the angle from
     // the axis to x, less the cone's half angle and the angle the bounds' sphere spans from x —
@@ -115,9 +119,8 @@ double LightTree::facing(const Node& node, const Vec3& x) const {
     const double cos_axis = std::clamp(dot(node.axis, to_x) / d, -1.0, 1.0);
     if (cos_axis >= node.cos_spread) return 1;
     const double sin_axis = std::sqrt(1 - cos_axis * cos_axis);
-    const double sin_spread = std::sqrt(std::max(0.0, 1 - node.cos_spread * node.cos_spread));
-    const double cos_beyond = cos_axis * node.cos_spread + sin_axis * sin_spread;
-    const double sin_beyond = sin_axis * node.cos_spread - cos_axis * sin_spread;
+    const double cos_beyond = cos_axis * node.cos_spread + sin_axis * node.sin_spread;
+    const double sin_beyond = sin_axis * node.cos_spread - cos_axis * node.sin_spread;
     const double sin_seen = r / d, cos_seen = std::sqrt(1 - sin_seen * sin_seen);
     if (cos_beyond >= cos_seen) return 1;
     return std::max(0.0, cos_beyond * cos_seen + sin_beyond * sin_seen);
@@ -141,8 +144,8 @@ double LightTree::cluster_importance(const Node& node, const Vec3& x, const Vec3
     return node.power * front * cosine / std::max(d2, r2);
 }
 
-LightCut LightTree::cut(const Vec3& x, const Vec3& n, double relative_bound,
-                        std::size_t max_nodes) const {
+LightCut LightTree::cut(const Vec3& x, const Vec3& n, double relative_bound, std::size_t max_nodes,
+                        std::size_t max_seen_nodes, const std::function<bool(int)>& seen) const {
     LightCut cut;
     if (leaf_of_.size() <= max_nodes) {
         for (std::size_t s = 0; s < leaf_of_.size(); ++s) cut.sources.push_back(s);
@@ -163,14 +166,19 @@ LightCut LightTree::cut(const Vec3& x, const Vec3& n, double relative_bound,
     while (!heap.empty()) {
         const auto [b, node] = heap.front();
         const Node& v = nodes_[static_cast<std::size_t>(node)];
-        if (v.left >= 0 && ((std::isfinite(b) && b <= relative_bound * finite_sum) ||
-                            cut.sources.size() + heap.size() + 1 > max_nodes)) {
-            break;
-        }
+        if (v.left >= 0 && std::isfinite(b) && b <= relative_bound * finite_sum) break;
+        const std::size_t entries = cut.sources.size() + cut.clusters.size() + heap.size();
+        const bool beyond = v.left >= 0 && entries + 1 > max_nodes;
+        if (beyond && entries + 1 > max_seen_nodes) break;
         std::pop_heap(heap.begin(), heap.end());
         heap.pop_back();
         if (v.left < 0) {
             cut.sources.push_back(v.source);
+            continue;
+        }
+        // Past max_nodes, a node x sees none of stays whole (its bound still counts).
+        if (beyond && !seen(node)) {
+            cut.clusters.push_back(node);
             continue;
         }
         if (std::isfinite(b)) finite_sum -= b;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -43,9 +44,12 @@ public:
     /// The cut at point x with unit normal n: a node is split while its bound on the unoccluded
     /// illuminance at x (peak intensity over the squared distance to its box) exceeds
     /// `relative_bound` times the sum of the bounds over the cut, and the cut has fewer than
-    /// `max_nodes` entries; boxes wholly behind x's tangent plane are left out (they send
+    /// `max_nodes` entries, or fewer than `max_seen_nodes` and `seen(node)` says x sees some of
+    /// the node's sources (a lamp's bulb beside x is worth a shadow ray per piece, the panels of
+    /// rooms behind walls are not); boxes wholly behind x's tangent plane are left out (they send
     /// nothing). With at most `max_nodes` sources every source is on its own.
-    LightCut cut(const Vec3& x, const Vec3& n, double relative_bound, std::size_t max_nodes) const;
+    LightCut cut(const Vec3& x, const Vec3& n, double relative_bound, std::size_t max_nodes,
+                 std::size_t max_seen_nodes = 0, const std::function<bool(int)>& seen = {}) const;
 
     /// A source of `cluster` drawn by power from uniform r, and its probability within it.
     std::size_t draw_by_power(int cluster, double r, double& probability) const;
@@ -71,6 +75,10 @@ private:
         /// may face any way).
         Vec3 axis{0, 0, 0};
         double cos_spread = -1;
+        double sin_spread = 0;
+        /// The bounds' sphere, kept for facing(), which every draw and cut calls at each node.
+        Vec3 sphere_centre{0, 0, 0};
+        double sphere_radius = 0;
         int left = -1, right = -1;  ///< children; both -1 for a source's leaf
         int parent = -1;
         std::size_t source = 0;  ///< a leaf's source

@@ -84,7 +84,7 @@ public:
     /// What one more ray set costs at one point: its value, its rays' landings, and the near
     /// hits among them at the share seen so far (every ray, before any is cast).
     std::size_t bytes_per_set() const;
-    /// What a point holds before any set, besides its three lists' heap blocks.
+    /// What a point holds before any set, besides its lists' heap blocks.
     static std::size_t bytes_per_point();
 
 private:
