@@ -8,6 +8,7 @@
 #include "geometry/cosine_direction.h"
 #include "montecarlo/channel_product.h"
 #include "montecarlo/sample_variance.h"
+#include "montecarlo/set_allotment.h"
 #include "parallel/fork_join.h"
 #include "solution/surface_summary.h"
 
@@ -267,13 +268,33 @@ std::size_t SensorGather::aims_bytes() const {
     return bytes;
 }
 
-std::uint64_t SensorGather::gather(int sets, const std::function<bool()>& stop) {
+std::uint64_t SensorGather::gather(int sets, const std::function<bool()>& stop,
+                                   const std::vector<GatheredPoint>& last,
+                                   const std::vector<std::size_t>& set_sizes) {
+    std::vector<int> has(points_.size()), target(points_.size(), sets);
+    for (std::size_t i = 0; i < points_.size(); ++i)
+        has[i] = static_cast<int>(points_[i].set_direct.size());
+    if (last.size() == points_.size() && !set_sizes.empty()) {
+        // A point's spread per set: its mean's variance times its sets.
+        std::vector<double> spread(points_.size());
+        for (std::size_t i = 0; i < points_.size(); ++i)
+            spread[i] = std::sqrt(last[i].gather_variance * last[i].sets);
+        target = allot_sets(sets, has, spread, set_sizes);
+    }
     std::vector<std::uint64_t> rays(points_.size(), 0);
     parallel_for(0, points_.size(), [&](std::size_t i) {
-        if (!stop()) gather_point(i, points_[i], sets, rays[i]);
+        if (!stop()) gather_point(i, points_[i], target[i], rays[i]);
     });
-    sets_ = sets;
-    for (const Point& p : points_) sets_ = std::min(sets_, static_cast<int>(p.set_direct.size()));
+    std::size_t gathered = 0;
+    bool complete = true;
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+        const std::size_t n = points_[i].set_direct.size();
+        gathered += n;
+        complete = complete && n >= static_cast<std::size_t>(target[i]);
+    }
+    // A gather cut short has not completed the sets it was asked for, whatever its mean.
+    const auto mean = points_.empty() ? sets : static_cast<int>(gathered / points_.size());
+    sets_ = complete ? mean : std::min(sets - 1, mean);
     std::uint64_t total = 0;
     for (const std::uint64_t r : rays) total += r;
     return total;
@@ -308,9 +329,10 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
     std::vector<GatheredPoint> out(points_.size());
     parallel_for(0, points_.size(), [&](std::size_t i) {
         const Point& p = points_[i];
-        const int sets = sets_;
+        const auto sets = static_cast<int>(p.set_direct.size());
         GatheredPoint& g = out[i];
         g.illuminance = p.luminaires;
+        g.sets = sets;
         if (sets == 0) return;
         std::vector<double> set_value(static_cast<std::size_t>(sets));
         std::array<double, kBatches> batch{}, batch_coarse{};

@@ -37,6 +37,7 @@ namespace radiant {
 /// its noise, which only a sum over many points tells reliably.
 struct GatheredPoint {
     double illuminance = 0;
+    int sets = 0;  ///< the ray sets it was gathered from
     double gather_variance = 0;
     double photon_variance = 0;
     /// What each batch of the photon field alone gives the point's reflected light (lux): all
@@ -66,14 +67,20 @@ public:
                  const Visibility& visibility, std::uint64_t seed, Points which = Points::sensors);
 
     /// Casts ray sets until every point has `sets` of them; the exact luminaire light comes with
-    /// the first. Returns the rays cast. Parallel over points; deterministic.
-    std::uint64_t gather(int sets, const std::function<bool()>& stop);
+    /// the first. Given the points' last evaluate() (`last`) and the sensor sets' sizes, `sets`
+    /// is the mean per point within each sensor set instead, allotted by how each point's sets
+    /// spread (allot_sets). Returns the rays cast. Parallel over points; deterministic.
+    std::uint64_t gather(int sets, const std::function<bool()>& stop,
+                         const std::vector<GatheredPoint>& last = {},
+                         const std::vector<std::size_t>& set_sizes = {});
     /// Points not gathered yet aim part of their rays at the bright sides of `field` (the
     /// sensors' fixed-normal points; not the eyes, nor receivers that average their normal), if
     /// all points' aims take at most `max_bytes`; else none aims.
     void aim_at_bright_sides(const PhotonField& field, std::size_t max_bytes);
     /// What the points' aims hold.
     std::size_t aims_bytes() const;
+    /// The ray sets per point on average that the last gather completed (fewer than it was
+    /// asked for where it was cut short).
     int sets() const { return sets_; }
     std::size_t points() const { return points_.size(); }
 

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
 
 #include "design/glare.h"
 #include "design/lighting_assembly.h"
@@ -389,7 +388,13 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     MonteCarloError error;
     double reported = std::numeric_limits<double>::infinity();
     std::unique_ptr<MonteCarloLevel> level;
-    std::vector<std::pair<SampleBudget, int>> carried;  // each component's samples, coarser level
+    // Each component's samples at the coarser level, and its points' values there.
+    struct Carried {
+        SampleBudget budget;
+        int eye_sets = 0;
+        std::vector<GatheredPoint> points, eye_points;
+    };
+    std::vector<Carried> carried;
     std::size_t rounds = 0;
     bool stopped = false;
     std::uint64_t mesh_version = kFirstMeshVersion;
@@ -456,7 +461,14 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                                level->mesh.sides().size() * sizeof(ElementSide);
         for (std::size_t c = 0; c < level->lights.size(); ++c) {
             ComponentLight& light = *level->lights[c];
-            if (c < carried.size()) std::tie(light.budget, light.eye_sets) = carried[c];
+            if (c < carried.size()) {
+                // The coarser level's values stand in for this level's until its first
+                // estimate: their spread allots its first ray sets (SensorGather::gather).
+                light.budget = carried[c].budget;
+                light.eye_sets = carried[c].eye_sets;
+                light.points = std::move(carried[c].points);
+                light.eye_points = std::move(carried[c].eye_points);
+            }
             light.budget.photons = std::max(
                 {light.budget.photons, kMinInitialPhotons,
                  static_cast<std::size_t>(kInitialPhotonsPerSide * share *
@@ -510,8 +522,11 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             report("gather", 0.5, rounds, estimate_so_far(reported));
             for (const auto& light : level->lights) {
                 if (done(*light)) continue;
-                const std::uint64_t gather_rays = light->gather.gather(light->budget.sets, stop);
-                const std::uint64_t eye_gather_rays = light->eyes.gather(light->eye_sets, stop);
+                // Each round's sets go mostly to the points whose sets spread most so far.
+                const std::uint64_t gather_rays =
+                    light->gather.gather(light->budget.sets, stop, light->points, set_sizes);
+                const std::uint64_t eye_gather_rays =
+                    light->eyes.gather(light->eye_sets, stop, light->eye_points, eye_sizes);
                 rays_ += gather_rays + eye_gather_rays;
                 gathering.rays += gather_rays + eye_gather_rays;
                 eye_rays += eye_gather_rays;
@@ -622,7 +637,10 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         // The finer level starts afresh; its noise needs the samples the coarser one had.
         carried.clear();
         for (const auto& light : level->lights) {
-            carried.push_back({{light->field.photons(), light->gather.sets()}, light->eyes.sets()});
+            carried.push_back({{light->field.photons(), light->gather.sets()},
+                               light->eyes.sets(),
+                               std::move(light->points),
+                               std::move(light->eye_points)});
         }
         reported = std::numeric_limits<double>::infinity();
     }
