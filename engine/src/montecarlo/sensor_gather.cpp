@@ -51,12 +51,14 @@ SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
             points_.push_back({.position = o.position,
                                .receiver = SensorReceiver(SensorKind::planar, o.view),
                                .background = true});
+            set_sizes_.push_back(1);
         }
         return;
     }
     for (const PreparedSensorSet& set : scene.sensors) {
         for (const Vec3& p : set.points)
             points_.push_back({.position = p, .receiver = SensorReceiver(set.kind, set.normal)});
+        set_sizes_.push_back(set.points.size());
     }
 }
 
@@ -268,36 +270,50 @@ std::size_t SensorGather::aims_bytes() const {
     return bytes;
 }
 
-std::uint64_t SensorGather::gather(int sets, const std::function<bool()>& stop,
-                                   const std::vector<GatheredPoint>& last,
-                                   const std::vector<std::size_t>& set_sizes) {
-    std::vector<int> has(points_.size()), target(points_.size(), sets);
+std::uint64_t SensorGather::gather(const std::vector<int>& sets, const std::function<bool()>& stop,
+                                   const std::vector<GatheredPoint>& last) {
+    std::vector<int> has(points_.size());
     for (std::size_t i = 0; i < points_.size(); ++i)
         has[i] = static_cast<int>(points_[i].set_direct.size());
-    if (last.size() == points_.size() && !set_sizes.empty()) {
-        // A point's spread per set: its mean's variance times its sets.
-        std::vector<double> spread(points_.size());
-        for (std::size_t i = 0; i < points_.size(); ++i)
-            spread[i] = std::sqrt(last[i].gather_variance * last[i].sets);
-        target = allot_sets(sets, has, spread, set_sizes);
+    // A point's spread per set: its mean's variance times its sets.
+    std::vector<double> spread;
+    if (last.size() == points_.size()) {
+        for (const GatheredPoint& g : last) spread.push_back(std::sqrt(g.gather_variance * g.sets));
     }
+    const std::vector<int> target = allot_sets(sets, has, spread, set_sizes_);
     std::vector<std::uint64_t> rays(points_.size(), 0);
     parallel_for(0, points_.size(), [&](std::size_t i) {
         if (!stop()) gather_point(i, points_[i], target[i], rays[i]);
     });
-    std::size_t gathered = 0;
-    bool complete = true;
-    for (std::size_t i = 0; i < points_.size(); ++i) {
-        const std::size_t n = points_[i].set_direct.size();
-        gathered += n;
-        complete = complete && n >= static_cast<std::size_t>(target[i]);
-    }
-    // A gather cut short has not completed the sets it was asked for, whatever its mean.
-    const auto mean = points_.empty() ? sets : static_cast<int>(gathered / points_.size());
-    sets_ = complete ? mean : std::min(sets - 1, mean);
+    reached_ = true;
+    for (std::size_t i = 0; i < points_.size(); ++i)
+        reached_ = reached_ && points_[i].set_direct.size() >= static_cast<std::size_t>(target[i]);
     std::uint64_t total = 0;
     for (const std::uint64_t r : rays) total += r;
     return total;
+}
+
+std::uint64_t SensorGather::gather(int sets, const std::function<bool()>& stop) {
+    return gather(std::vector<int>(set_sizes_.size(), sets), stop);
+}
+
+int SensorGather::sets() const {
+    if (points_.empty()) return 0;
+    std::size_t gathered = 0;
+    for (const Point& p : points_) gathered += p.set_direct.size();
+    return static_cast<int>(gathered / points_.size());
+}
+
+std::vector<int> SensorGather::set_means() const {
+    std::vector<int> out;
+    std::size_t first = 0;
+    for (const std::size_t size : set_sizes_) {
+        std::size_t gathered = 0;
+        for (std::size_t i = first; i < first + size; ++i) gathered += points_[i].set_direct.size();
+        out.push_back(size > 0 ? static_cast<int>(gathered / size) : 0);
+        first += size;
+    }
+    return out;
 }
 
 std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) const {

@@ -66,22 +66,29 @@ public:
     SensorGather(const PreparedScene& scene, const ElementMesh& mesh, const LightSources& sources,
                  const Visibility& visibility, std::uint64_t seed, Points which = Points::sensors);
 
-    /// Casts ray sets until every point has `sets` of them; the exact luminaire light comes with
-    /// the first. Given the points' last evaluate() (`last`) and the sensor sets' sizes, `sets`
-    /// is the mean per point within each sensor set instead, allotted by how each point's sets
-    /// spread (allot_sets). Returns the rays cast. Parallel over points; deterministic.
-    std::uint64_t gather(int sets, const std::function<bool()>& stop,
-                         const std::vector<GatheredPoint>& last = {},
-                         const std::vector<std::size_t>& set_sizes = {});
+    /// Casts ray sets until the points of each sensor set (each eye: a set of one) have
+    /// `sets[s]` per point on average, allotted by how each point's sets spread in `last` (the
+    /// points' previous evaluate(), if any; see allot_sets), or evenly; the exact luminaire light
+    /// comes with a point's first set. Returns the rays cast. Parallel over points;
+    /// deterministic.
+    std::uint64_t gather(const std::vector<int>& sets, const std::function<bool()>& stop,
+                         const std::vector<GatheredPoint>& last = {});
+    /// The same, `sets` per point in every sensor set, evenly.
+    std::uint64_t gather(int sets, const std::function<bool()>& stop);
     /// Points not gathered yet aim part of their rays at the bright sides of `field` (the
     /// sensors' fixed-normal points; not the eyes, nor receivers that average their normal), if
     /// all points' aims take at most `max_bytes`; else none aims.
     void aim_at_bright_sides(const PhotonField& field, std::size_t max_bytes);
     /// What the points' aims hold.
     std::size_t aims_bytes() const;
-    /// The ray sets per point on average that the last gather completed (fewer than it was
-    /// asked for where it was cut short).
-    int sets() const { return sets_; }
+    /// The ray sets per point on average, over every point.
+    int sets() const;
+    /// The same within each sensor set.
+    std::vector<int> set_means() const;
+    /// Whether the last gather gave every point the sets allotted to it (not cut short).
+    bool reached() const { return reached_; }
+    /// The sensor sets' sizes, in the order of the points.
+    const std::vector<std::size_t>& set_sizes() const { return set_sizes_; }
     std::size_t points() const { return points_.size(); }
 
     /// Every point's value and error parts on `field`, in the order of the sets and their
@@ -156,8 +163,9 @@ private:
     std::uint64_t seed_;
     std::uint64_t stream_;  ///< keys the points' samples: the eyes' apart from the sensors'
     std::vector<Point> points_;
+    std::vector<std::size_t> set_sizes_;
     BrightSides bright_;
-    int sets_ = 0;
+    bool reached_ = false;
 };
 
 }  // namespace radiant

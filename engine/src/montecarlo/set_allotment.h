@@ -8,13 +8,14 @@
 
 namespace radiant {
 
-/// Ray sets per point such that each sensor set (`set_sizes` split the points) holds `sets` per
-/// point on average, or a little more: in proportion to each point's spread per set (`spread`,
-/// a standard deviation), which gives the least sum of the points' variances for those sets
-/// (n ∝ σ), and never fewer than a point `has`. A point's spread counts as at least
-/// kMinSpreadShare of its set's RMS spread, so that one whose first sets happened to agree
-/// still gets a share; a set without spread gets `sets` for every point.
-std::vector<int> allot_sets(int sets, const std::vector<int>& has,
+/// Ray sets per point such that each sensor set (`set_sizes` split the points) holds `sets[s]`
+/// per point on average, or a little more: in proportion to each point's spread per set
+/// (`spread`, a standard deviation; empty: the same for all), which gives the least sum of the
+/// points' variances for those sets (n ∝ σ), and never fewer than a point `has`. A point's
+/// spread counts as at least kMinSpreadShare of its set's RMS spread, so that one whose first
+/// sets happened to agree still gets a share; a set without spread gets `sets[s]` for every
+/// point.
+std::vector<int> allot_sets(const std::vector<int>& sets, const std::vector<int>& has,
                             const std::vector<double>& spread,
                             const std::vector<std::size_t>& set_sizes);
 

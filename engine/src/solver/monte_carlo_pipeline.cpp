@@ -76,7 +76,9 @@ struct ComponentLight {
     SensorGather gather, eyes;
     int component;  ///< −1: every source
     double maintenance_factor;
+    /// Photons, and the ray sets per point of the sensor set that asks for most.
     SampleBudget budget;
+    std::vector<int> set_sets;  ///< each sensor set's ray sets per point, on average
     int eye_sets = kInitialSets;
     MonteCarloError error, eye_error;  ///< the eyes': scaled to the tolerance
     std::vector<SetError> set_errors, eye_errors;
@@ -84,13 +86,15 @@ struct ComponentLight {
     double reported = std::numeric_limits<double>::infinity();
     double eye_reported = std::numeric_limits<double>::infinity();
     bool complete() const {
-        return field.photons() >= budget.photons && gather.sets() >= budget.sets &&
-               eyes.sets() >= eye_sets;
+        return field.photons() >= budget.photons && gather.reached() && eyes.reached();
     }
     /// Keeps this share of the budgeted ray sets (never fewer than are gathered): what fits in
     /// memory.
     void cut_sets(double share) {
-        budget.sets = std::max(gather.sets(), static_cast<int>(share * budget.sets));
+        const std::vector<int> gathered = gather.set_means();
+        for (std::size_t s = 0; s < set_sets.size(); ++s)
+            set_sets[s] = std::max(gathered[s], static_cast<int>(share * set_sets[s]));
+        budget.sets = set_sets.empty() ? 0 : *std::max_element(set_sets.begin(), set_sets.end());
         eye_sets = std::max(eyes.sets(), static_cast<int>(share * eye_sets));
     }
 };
@@ -106,6 +110,34 @@ int first_round_sets(double share, const std::vector<std::size_t>& set_sizes) {
         1 + static_cast<int>(std::ceil(kMinGatherDegrees / static_cast<double>(smallest)));
     const auto scaled = static_cast<int>(std::ceil(kInitialSets * share));
     return std::min(kInitialSets, std::max(spread_sets, scaled));
+}
+
+// The next round's photons and ray sets: each sensor set's least-cost budget for its own error
+// (its sets cost in proportion to its points), and photons the most any set asks for; a set
+// already within `target` keeps its sets (a work plane need not gather as long as the noisy
+// worktop under the cabinets' strip lights does). Without sensors, the surfaces' error prices
+// the photons.
+void next_budgets(ComponentLight& light, double target, double per_photon, double per_set) {
+    const SampleBudget now{light.field.photons(), light.gather.sets()};
+    if (light.set_errors.empty()) {
+        light.budget = next_budget(light.error, now, target, per_photon, per_set);
+        return;
+    }
+    const std::vector<int> means = light.gather.set_means();
+    const std::vector<std::size_t>& sizes = light.gather.set_sizes();
+    double points = 0;
+    for (const std::size_t size : sizes) points += static_cast<double>(size);
+    std::size_t photons = now.photons;
+    for (std::size_t s = 0; s < sizes.size(); ++s) {
+        const SetError& e = light.set_errors[s];
+        light.set_sets[s] = std::max(light.set_sets[s], means[s]);
+        if (!(e.mean > 0) || e.error.total <= target) continue;
+        const SampleBudget next = next_budget(e.error, {now.photons, means[s]}, target, per_photon,
+                                              per_set * static_cast<double>(sizes[s]) / points);
+        light.set_sets[s] = next.sets;
+        photons = std::max(photons, next.photons);
+    }
+    light.budget = {photons, *std::max_element(light.set_sets.begin(), light.set_sets.end())};
 }
 
 // One level of elements with everything that refers to them. Its elements' open areas are
@@ -141,8 +173,12 @@ std::size_t sets_bytes(const MonteCarloLevel& level, RaySets which) {
     std::size_t bytes = 0;
     for (const auto& light : level.lights) {
         const bool budgeted = which == RaySets::budgeted;
-        bytes += static_cast<std::size_t>(budgeted ? light->budget.sets : light->gather.sets()) *
-                     light->gather.points() * light->gather.bytes_per_set() +
+        const std::vector<int> sets = budgeted ? light->set_sets : light->gather.set_means();
+        const std::vector<std::size_t>& sizes = light->gather.set_sizes();
+        std::size_t point_sets = 0;
+        for (std::size_t s = 0; s < sets.size(); ++s)
+            point_sets += static_cast<std::size_t>(sets[s]) * sizes[s];
+        bytes += point_sets * light->gather.bytes_per_set() +
                  static_cast<std::size_t>(budgeted ? light->eye_sets : light->eyes.sets()) *
                      light->eyes.points() * light->eyes.bytes_per_set();
     }
@@ -391,6 +427,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     // Each component's samples at the coarser level, and its points' values there.
     struct Carried {
         SampleBudget budget;
+        std::vector<int> set_sets;
         int eye_sets = 0;
         std::vector<GatheredPoint> points, eye_points;
     };
@@ -465,6 +502,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 // The coarser level's values stand in for this level's until its first
                 // estimate: their spread allots its first ray sets (SensorGather::gather).
                 light.budget = carried[c].budget;
+                light.set_sets = std::move(carried[c].set_sets);
                 light.eye_sets = carried[c].eye_sets;
                 light.points = std::move(carried[c].points);
                 light.eye_points = std::move(carried[c].eye_points);
@@ -473,6 +511,8 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 {light.budget.photons, kMinInitialPhotons,
                  static_cast<std::size_t>(kInitialPhotonsPerSide * share *
                                           static_cast<double>(level->mesh.sides().size()))});
+            light.set_sets.resize(set_sizes.size(), initial_sets);
+            for (int& sets : light.set_sets) sets = std::max(sets, initial_sets);
             light.budget.sets = std::max(light.budget.sets, initial_sets);
         }
         bool refine = false;
@@ -524,9 +564,8 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 if (done(*light)) continue;
                 // Each round's sets go mostly to the points whose sets spread most so far.
                 const std::uint64_t gather_rays =
-                    light->gather.gather(light->budget.sets, stop, light->points, set_sizes);
-                const std::uint64_t eye_gather_rays =
-                    light->eyes.gather(light->eye_sets, stop, light->eye_points, eye_sizes);
+                    light->gather.gather(light->set_sets, stop, light->points);
+                const std::uint64_t eye_gather_rays = light->eyes.gather(light->eye_sets, stop);
                 rays_ += gather_rays + eye_gather_rays;
                 gathering.rays += gather_rays + eye_gather_rays;
                 eye_rays += eye_gather_rays;
@@ -620,10 +659,8 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             for (const auto& light : level->lights) {
                 if (done(*light)) continue;
                 const SampleBudget now{light->field.photons(), light->gather.sets()};
-                if (!(light->reported <= tolerance) || scene.observers.empty()) {
-                    light->budget =
-                        next_budget(light->error, now, bias_target, per_photon, per_set);
-                }
+                if (!(light->reported <= tolerance) || scene.observers.empty())
+                    next_budgets(*light, bias_target, per_photon, per_set);
                 if (!(light->eye_reported <= tolerance)) {
                     const SampleBudget eyes =
                         next_budget(light->eye_error, {now.photons, light->eyes.sets()},
@@ -638,6 +675,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         carried.clear();
         for (const auto& light : level->lights) {
             carried.push_back({{light->field.photons(), light->gather.sets()},
+                               light->gather.set_means(),
                                light->eyes.sets(),
                                std::move(light->points),
                                std::move(light->eye_points)});
