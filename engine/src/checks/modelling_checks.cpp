@@ -6,6 +6,7 @@
 #include "checks/black_backs.h"
 #include "checks/duplicate_names.h"
 #include "checks/emission_checks.h"
+#include "checks/emitter_placement.h"
 #include "checks/light_paths.h"
 #include "checks/luminaire_placement.h"
 #include "checks/sensor_placement.h"
@@ -74,6 +75,7 @@ std::vector<Warning> modelling_warnings(const CheckedScene& input, std::uint64_t
     const LightPaths paths = trace_light_paths(input, rays);
     const std::vector<bool> misplaced = check_luminaire_placement(input, paths, out);
     check_black_backs(input, paths, misplaced, out);
+    check_emitter_placement(input, out, rays);
     check_sensor_placement(input, out, rays);
     return capped_per_code(std::move(out));
 }
