@@ -76,8 +76,7 @@ struct ComponentLight {
     SensorGather gather, eyes;
     int component;  ///< −1: every source
     double maintenance_factor;
-    /// Photons, and the ray sets per point of the sensor set that asks for most.
-    SampleBudget budget;
+    std::size_t photon_budget = 0;
     std::vector<int> set_sets;  ///< each sensor set's ray sets per point, on average
     int eye_sets = kInitialSets;
     MonteCarloError error, eye_error;  ///< the eyes': scaled to the tolerance
@@ -86,7 +85,7 @@ struct ComponentLight {
     double reported = std::numeric_limits<double>::infinity();
     double eye_reported = std::numeric_limits<double>::infinity();
     bool complete() const {
-        return field.photons() >= budget.photons && gather.reached() && eyes.reached();
+        return field.photons() >= photon_budget && gather.reached() && eyes.reached();
     }
     /// Keeps this share of the budgeted ray sets (never fewer than are gathered): what fits in
     /// memory.
@@ -94,7 +93,6 @@ struct ComponentLight {
         const std::vector<int> gathered = gather.set_means();
         for (std::size_t s = 0; s < set_sets.size(); ++s)
             set_sets[s] = std::max(gathered[s], static_cast<int>(share * set_sets[s]));
-        budget.sets = set_sets.empty() ? 0 : *std::max_element(set_sets.begin(), set_sets.end());
         eye_sets = std::max(eyes.sets(), static_cast<int>(share * eye_sets));
     }
 };
@@ -120,7 +118,7 @@ int first_round_sets(double share, const std::vector<std::size_t>& set_sizes) {
 void next_budgets(ComponentLight& light, double target, double per_photon, double per_set) {
     const SampleBudget now{light.field.photons(), light.gather.sets()};
     if (light.set_errors.empty()) {
-        light.budget = next_budget(light.error, now, target, per_photon, per_set);
+        light.photon_budget = next_budget(light.error, now, target, per_photon, per_set).photons;
         return;
     }
     const std::vector<int> means = light.gather.set_means();
@@ -137,7 +135,7 @@ void next_budgets(ComponentLight& light, double target, double per_photon, doubl
         light.set_sets[s] = next.sets;
         photons = std::max(photons, next.photons);
     }
-    light.budget = {photons, *std::max_element(light.set_sets.begin(), light.set_sets.end())};
+    light.photon_budget = photons;
 }
 
 // One level of elements with everything that refers to them. Its elements' open areas are
@@ -426,7 +424,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     std::unique_ptr<MonteCarloLevel> level;
     // Each component's samples at the coarser level, and its points' values there.
     struct Carried {
-        SampleBudget budget;
+        std::size_t photons = 0;
         std::vector<int> set_sets;
         int eye_sets = 0;
         std::vector<GatheredPoint> points, eye_points;
@@ -501,19 +499,18 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             if (c < carried.size()) {
                 // The coarser level's values stand in for this level's until its first
                 // estimate: their spread allots its first ray sets (SensorGather::gather).
-                light.budget = carried[c].budget;
+                light.photon_budget = carried[c].photons;
                 light.set_sets = std::move(carried[c].set_sets);
                 light.eye_sets = carried[c].eye_sets;
                 light.points = std::move(carried[c].points);
                 light.eye_points = std::move(carried[c].eye_points);
             }
-            light.budget.photons = std::max(
-                {light.budget.photons, kMinInitialPhotons,
+            light.photon_budget = std::max(
+                {light.photon_budget, kMinInitialPhotons,
                  static_cast<std::size_t>(kInitialPhotonsPerSide * share *
                                           static_cast<double>(level->mesh.sides().size()))});
             light.set_sets.resize(set_sizes.size(), initial_sets);
             for (int& sets : light.set_sets) sets = std::max(sets, initial_sets);
-            light.budget.sets = std::max(light.budget.sets, initial_sets);
         }
         bool refine = false;
         for (;; ++rounds) {
@@ -523,7 +520,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             for (const auto& light : level->lights) {
                 if (done(*light)) continue;
                 const std::uint64_t photon_rays = light->field.trace(
-                    light->budget.photons - std::min(light->budget.photons, light->field.photons()),
+                    light->photon_budget - std::min(light->photon_budget, light->field.photons()),
                     light->sources, *level->visibility, stop);
                 rays_ += photon_rays;
                 photons.rays += photon_rays;
@@ -658,14 +655,13 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             const double per_eye_set = static_cast<double>(eye_rays) / std::max(eye_sets, 1);
             for (const auto& light : level->lights) {
                 if (done(*light)) continue;
-                const SampleBudget now{light->field.photons(), light->gather.sets()};
                 if (!(light->reported <= tolerance) || scene.observers.empty())
                     next_budgets(*light, bias_target, per_photon, per_set);
                 if (!(light->eye_reported <= tolerance)) {
                     const SampleBudget eyes =
-                        next_budget(light->eye_error, {now.photons, light->eyes.sets()},
+                        next_budget(light->eye_error, {light->field.photons(), light->eyes.sets()},
                                     bias_target, per_photon, per_eye_set);
-                    light->budget.photons = std::max(light->budget.photons, eyes.photons);
+                    light->photon_budget = std::max(light->photon_budget, eyes.photons);
                     light->eye_sets = eyes.sets;
                 }
             }
@@ -674,10 +670,8 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         // The finer level starts afresh; its noise needs the samples the coarser one had.
         carried.clear();
         for (const auto& light : level->lights) {
-            carried.push_back({{light->field.photons(), light->gather.sets()},
-                               light->gather.set_means(),
-                               light->eyes.sets(),
-                               std::move(light->points),
+            carried.push_back({light->field.photons(), light->gather.set_means(),
+                               light->eyes.sets(), std::move(light->points),
                                std::move(light->eye_points)});
         }
         reported = std::numeric_limits<double>::infinity();
