@@ -74,7 +74,12 @@ private:
         Rgb exitance{0, 0, 0};
         std::vector<double> fan_cdf;  ///< cumulative area of the fan triangles, last = area
         Vec3 centroid;
-        double power = 0;  ///< photometric lm
+        /// Its plane's normal and its area, kept here for rough_light(), which a landing
+        /// calls for every piece of a lamp's bulb.
+        Vec3 normal;
+        double area = 0;
+        double radius = 0;  ///< the farthest vertex from the centroid
+        double power = 0;   ///< photometric lm
     };
     /// A direction table for a photometric luminaire: cells of 1° in γ and 5° in C.
     struct DirectionTable {
