@@ -165,11 +165,11 @@ LightSources::LightSources(const PreparedScene& scene, double ray_epsilon, int c
         Vec3 centroid{0, 0, 0};
         for (const Vec3& v : p.vertices) centroid += v;
         e.centroid = centroid / static_cast<double>(p.vertices.size());
-        e.normal = p.normal;
         e.area = area;
         for (const Vec3& v : p.vertices) e.radius = std::max(e.radius, length(v - e.centroid));
         e.power = luminance(m.exitance_lm_m2) * area;
         source_power_.push_back(e.power);
+        rough_.push_back({e.centroid, p.normal, area / kPi, e.power});
         pieces_.push_back(std::move(e));
     }
     for (std::size_t i = 0; i < pieces_.size(); ++i) {
@@ -361,12 +361,12 @@ double LightSources::rough_light(std::size_t s, const Vec3& x, const Vec3& n) co
     if (s < luminaires) {
         return source_power_[s] * direct_kernel_per_lm(scene_.luminaires[s], x, n);
     }
-    const EmittingPiece& e = pieces_[s - luminaires];
+    const RoughPiece& e = rough_[s - luminaires];
     const Vec3 d = e.centroid - x;
-    const double d2 = std::max(dot(d, d), e.area / kPi);
     const double cos_x = dot(n, d), cos_p = -dot(e.normal, d);
     // Half a bulb faces away from any point: no division for those.
     if (!(cos_x > 0 && cos_p > 0)) return 0;
+    const double d2 = std::max(dot(d, d), e.least_d2);
     return e.power * cos_x * cos_p / (kPi * d2 * d2);
 }
 

@@ -74,12 +74,16 @@ private:
         Rgb exitance{0, 0, 0};
         std::vector<double> fan_cdf;  ///< cumulative area of the fan triangles, last = area
         Vec3 centroid;
-        /// Its plane's normal and its area, kept here for rough_light(), which a landing
-        /// calls for every piece of a lamp's bulb.
-        Vec3 normal;
         double area = 0;
         double radius = 0;  ///< the farthest vertex from the centroid
         double power = 0;   ///< photometric lm
+    };
+    /// What rough_light() reads of a piece, packed: a landing weighs every facet of a lamp's
+    /// bulb, and the pieces' own records are four times larger.
+    struct RoughPiece {
+        Vec3 centroid, normal;
+        double least_d2 = 0;  ///< area / π: nearer than that, the point kernel is capped
+        double power = 0;
     };
     /// A direction table for a photometric luminaire: cells of 1° in γ and 5° in C.
     struct DirectionTable {
@@ -118,6 +122,7 @@ private:
     double epsilon_;
     int component_;
     std::vector<EmittingPiece> pieces_;
+    std::vector<RoughPiece> rough_;  ///< one per piece
     /// The runs of pieces_ [first, second) that make one emitting surface each.
     std::vector<std::pair<std::size_t, std::size_t>> surface_runs_;
     std::vector<DirectionTable> tables_;  ///< per luminaire; empty cdf unless photometric
