@@ -520,7 +520,6 @@ Result Pipeline::run() {
     auto [triangles, triangle_piece] = occluder_triangles(prepared.scene);
     prepared.triangle_piece = std::move(triangle_piece);
     prepared.visibility = make_embree_visibility(triangles);
-    preparation_hold.resize(preparation_held_bytes(scene_));
     prepared.mean_free_path_m = mean_free_path(prepared.scene, *prepared.visibility,
                                                prepared.triangle_piece, options_.seed, rays_);
     if (method == "auto" && prefers_hierarchy(dense_mesh_size(prepared, options_.tolerance)))
@@ -535,8 +534,9 @@ Result Pipeline::run() {
                             prepared.triangle_piece, options_.seed},
                            check_rays);
     // Embree holds its own copy; the checks were the last to read this one (emitting surfaces'
-    // light paths start on its triangles).
+    // light paths start on its triangles). Until it goes, the preparation's peak stays held.
     std::vector<Triangle>().swap(triangles);
+    preparation_hold.resize(preparation_held_bytes(scene_));
     rays_ += check_rays;
     end_stage("checks", checks_start);
     if (observer_ && !warnings.empty()) observer_->on_warnings(warnings);
