@@ -90,7 +90,6 @@ int LightTree::build(std::vector<std::size_t>& order, std::size_t begin, std::si
     node.axis = front_cone_axis(order, begin, end, sources);
     node.cos_spread = front_cone_cosine(order, begin, end, sources, node.axis);
     node.sin_spread = std::sqrt(std::max(0.0, 1 - node.cos_spread * node.cos_spread));
-    node.sphere_centre = node.bounds.centre();
     node.sphere_radius = 0.5 * length(node.bounds.size());
     if (end - begin == 1) {
         node.source = order[begin];
@@ -109,7 +108,7 @@ int LightTree::build(std::vector<std::size_t>& order, std::size_t begin, std::si
 
 double LightTree::facing(const Node& node, const Vec3& x) const {
     if (node.cos_spread <= -1) return 1;
-    const Vec3 to_x = x - node.sphere_centre;
+    const Vec3 to_x = x - node.bounds.centre();
     const double d = length(to_x);
     const double r = node.sphere_radius;
     if (!(d > r)) return 1;

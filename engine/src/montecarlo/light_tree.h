@@ -76,8 +76,8 @@ private:
         Vec3 axis{0, 0, 0};
         double cos_spread = -1;
         double sin_spread = 0;
-        /// The bounds' sphere, kept for facing(), which every draw and cut calls at each node.
-        Vec3 sphere_centre{0, 0, 0};
+        /// The radius of the bounds' sphere, kept for facing(), which every draw and cut calls
+        /// at each node.
         double sphere_radius = 0;
         int left = -1, right = -1;  ///< children; both -1 for a source's leaf
         int parent = -1;
