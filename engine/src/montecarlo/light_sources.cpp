@@ -177,9 +177,10 @@ LightSources::LightSources(const PreparedScene& scene, double ray_epsilon, int c
         const int surface = scene.pieces[static_cast<std::size_t>(pieces_[i].piece)].surface;
         if (i == 0 ||
             scene.pieces[static_cast<std::size_t>(pieces_[i - 1].piece)].surface != surface) {
-            surface_runs_.push_back({i, i});
+            surface_runs_.push_back({i, i, 0});
         }
-        surface_runs_.back().second = i + 1;
+        surface_runs_.back().end = i + 1;
+        surface_runs_.back().power += std::max(source_power_[scene.luminaires.size() + i], 0.0);
     }
     for (const double w : source_power_) {
         total_power_ += std::max(w, 0.0);
@@ -408,21 +409,21 @@ Rgb LightSources::direct_at(const Vec3& x, const Vec3& n, const Visibility& visi
     return sum;
 }
 
-Rgb LightSources::surface_part(const std::pair<std::size_t, std::size_t>& run, const Vec3& x,
-                               const Vec3& n, const Visibility& visibility, SampleStream& rng,
+Rgb LightSources::surface_part(const SurfaceRun& run, const Vec3& x, const Vec3& n,
+                               const Visibility& visibility, SampleStream& rng,
                                std::uint64_t& rays) const {
     const std::size_t first = scene_.luminaires.size() + run.first;
-    const std::size_t size = run.second - run.first;
+    const std::size_t size = run.end - run.first;
     if (size == 1) return part(first, x, n, visibility, rng, rays);
     // Each piece's rough light once (a run has at most kMaxSurfaceDrawPieces).
     std::array<double, kMaxSurfaceDrawPieces> lights;
-    double light = 0, power = 0;
+    const double power = run.power;
+    if (!(power > 0)) return {0, 0, 0};
+    double light = 0;
     for (std::size_t k = 0; k < size; ++k) {
         lights[k] = rough_light(first + k, x, n);
         light += lights[k];
-        power += std::max(source_power_[first + k], 0.0);
     }
-    if (!(power > 0)) return {0, 0, 0};
     // By rough light, mixed with a share by power so that every piece can be drawn.
     const double by_light = light > 0 ? (1 - kPowerShare) / light : 0.0;
     const double by_power = (light > 0 ? kPowerShare : 1.0) / power;

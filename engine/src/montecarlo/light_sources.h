@@ -100,9 +100,15 @@ private:
     /// Source s's light at x: a luminaire exactly, an emitting piece by one point.
     Rgb part(std::size_t s, const Vec3& x, const Vec3& n, const Visibility& visibility,
              SampleStream& rng, std::uint64_t& rays) const;
-    /// One piece of an emitting surface's run of pieces `run` (of pieces_), drawn by its rough
-    /// light at x, its light over its probability.
-    Rgb surface_part(const std::pair<std::size_t, std::size_t>& run, const Vec3& x, const Vec3& n,
+    /// The pieces [first, end) of pieces_ that make one emitting surface, and their power
+    /// (photometric lm, each at least 0): a draw among them weighs it at every landing.
+    struct SurfaceRun {
+        std::size_t first = 0, end = 0;
+        double power = 0;
+    };
+    /// One piece of an emitting surface's run of pieces, drawn by its rough light at x, its
+    /// light over its probability.
+    Rgb surface_part(const SurfaceRun& run, const Vec3& x, const Vec3& n,
                      const Visibility& visibility, SampleStream& rng, std::uint64_t& rays) const;
     /// Luminaire i's light at x as `receiver` counts it, exactly (one shadow ray).
     Rgb luminaire_at(std::size_t i, const Vec3& x, const SensorReceiver& receiver,
@@ -122,10 +128,9 @@ private:
     double epsilon_;
     int component_;
     std::vector<EmittingPiece> pieces_;
-    std::vector<RoughPiece> rough_;  ///< one per piece
-    /// The runs of pieces_ [first, second) that make one emitting surface each.
-    std::vector<std::pair<std::size_t, std::size_t>> surface_runs_;
-    std::vector<DirectionTable> tables_;  ///< per luminaire; empty cdf unless photometric
+    std::vector<RoughPiece> rough_;         ///< one per piece
+    std::vector<SurfaceRun> surface_runs_;  ///< one per emitting surface
+    std::vector<DirectionTable> tables_;    ///< per luminaire; empty cdf unless photometric
     /// Sources in one list (luminaires first, then emitting pieces) by photometric power.
     std::vector<double> source_power_;
     std::vector<double> source_cdf_;
