@@ -112,6 +112,33 @@ TEST(ModellingChecks, AHoneybeeImportHasNoLight) {
         << listed(got);
 }
 
+// Luminaires near the ceiling as meant are no mistake: a downlight 3 cm under it aimed down, a
+// bare lamp 1 cm under it (a third of its light meets the ceiling at once, and would aimed any
+// way), an uplighter 30 cm under it. The same downlight aimed up, or a lamp on the ceiling
+// plane itself, is (tests/data/warnings).
+TEST(ModellingChecks, LuminairesNearTheCeilingAsMeantAreNotWarnedAbout) {
+    const Scene aimed_up = load(warnings_dir() / "luminaire-aimed-up.json");
+    struct Case {
+        const char* what;
+        double below_ceiling;
+        Distribution distribution;
+        Vec3 aim;
+    };
+    for (const Case& c : {Case{"downlight aimed down", 0.03, Distribution::lambertian, {0, 0, -1}},
+                          Case{"bare lamp", 0.01, Distribution::isotropic, {0, 0, -1}},
+                          Case{"uplighter", 0.3, Distribution::lambertian, {0, 0, 1}}}) {
+        SCOPED_TRACE(c.what);
+        Scene scene = aimed_up;
+        for (Luminaire& l : scene.luminaires) {
+            l.position.z = 3 - c.below_ceiling;
+            l.distribution = c.distribution;
+            l.aim = c.aim;
+        }
+        const std::vector<Warning> got = check_modelling(scene);
+        EXPECT_TRUE(got.empty()) << listed(got);
+    }
+}
+
 // An imported model's surfaces are named by the document surface that imports them.
 TEST(ModellingChecks, WarningsPointAtTheDocumentsSurfaces) {
     const Scene scene = load(warnings_dir() / "ceiling-wound-wrong.json");

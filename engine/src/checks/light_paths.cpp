@@ -27,11 +27,16 @@ constexpr int kMaxBounces = 64;
 constexpr std::size_t kChunk = 256;
 // Key of the paths' sample streams.
 constexpr std::uint64_t kPathStream = 0x6c6f7373ull;
+// near_distance() of a small model, relative to its diagonal.
+constexpr double kNearDiagonalShare = 0.05;
+constexpr double kNearMeters = 0.1;
 
 struct PathStart {
     Vec3 origin, direction;
     double flux_lm = 0;
     int luminaire = -1;  ///< −1: an emitting surface
+    /// A luminaire's: what it would send along `direction` aimed the other way.
+    double reversed_lm = 0;
 };
 
 struct Frame {
@@ -57,15 +62,18 @@ void luminaire_starts(const PreparedLuminaire& l, int index, std::size_t count,
         const Vec3 s = sphere_direction(k, count);
         const Vec3 u = f.t * s.x + f.b * s.y + f.n * s.z;
         const double intensity = std::max(0.0, intensity_per_lm(l, u));
-        out.push_back({l.position, u, intensity, index});
+        out.push_back({l.position, u, intensity, index, std::max(0.0, intensity_per_lm(l, -u))});
         total += intensity;
     }
     if (!(total > 0)) {
-        for (std::size_t k = first; k < out.size(); ++k) out[k].flux_lm = 0;
+        for (std::size_t k = first; k < out.size(); ++k) out[k].flux_lm = out[k].reversed_lm = 0;
         if (flux > 0) out.push_back({l.position, l.aim, flux, index});
         return;
     }
-    for (std::size_t k = first; k < out.size(); ++k) out[k].flux_lm *= flux / total;
+    for (std::size_t k = first; k < out.size(); ++k) {
+        out[k].flux_lm *= flux / total;
+        out[k].reversed_lm *= flux / total;
+    }
 }
 
 // Points drawn on the emitting triangles by power, leaving in cosine-distributed directions.
@@ -97,7 +105,7 @@ void emitter_starts(const CheckedScene& input, double power_lm, std::size_t coun
         const double s = std::sqrt(rng.next()), r = rng.next();
         const Vec3 x = t.a * (1 - s) + t.b * (s * (1 - r)) + t.c * (s * r);
         out.push_back({x + n * eps, cosine_direction(n, rng.next(), rng.next()),
-                       power_lm / static_cast<double>(count), -1});
+                       power_lm / static_cast<double>(count)});
     }
 }
 
@@ -129,7 +137,25 @@ struct PathEnd {
     SideHit first;
     int lost_surface = -1;  ///< the surface whose black back took the path
     bool escaped = false;
+    /// A luminaire's: the surface it lies on whose front it sends the path into, and through:
+    /// the light is lost.
+    int touched = -1;
 };
+
+// The surface whose front a luminaire at `origin` lies on and sends light along `direction`
+// into, and through (−1: none), given the ray's first hit beyond the stretch side_hit() skips.
+// The probe starts kTouchDistance behind the luminaire and ends as far beyond it; a first hit
+// on a front within that reach is the surface met a hair in front, which reflects the light.
+int touched_surface(const CheckedScene& input, const Vec3& origin, const Vec3& direction,
+                    const SideHit& first) {
+    const double reach = std::max(kTouchDistance, 16 * input.visibility.epsilon());
+    if (!first.escaped() && !first.black && first.t <= reach) return -1;
+    const RayHit hit = input.visibility.intersect(origin - direction * reach, direction, 2 * reach);
+    if (hit.triangle < 0) return -1;
+    const Piece& piece = input.prepared.pieces[static_cast<std::size_t>(
+        input.triangle_piece[static_cast<std::size_t>(hit.triangle)])];
+    return dot(direction, piece.normal) < 0 ? piece.surface : -1;
+}
 
 PathEnd trace(const CheckedScene& input, const PathStart& start, std::size_t index,
               std::uint64_t& rays) {
@@ -140,7 +166,13 @@ PathEnd trace(const CheckedScene& input, const PathStart& start, std::size_t ind
     for (int bounce = 0; bounce < kMaxBounces; ++bounce) {
         ++rays;
         const SideHit hit = side_hit(input, origin, direction);
-        if (bounce == 0) end.first = hit;
+        if (bounce == 0) {
+            end.first = hit;
+            if (start.luminaire >= 0 && start.flux_lm > 0) {
+                ++rays;
+                end.touched = touched_surface(input, origin, direction, hit);
+            }
+        }
         if (!(start.flux_lm > 0)) break;  // a direction without light: only its first hit counts
         if (hit.escaped()) {
             end.escaped = true;
@@ -161,7 +193,27 @@ PathEnd trace(const CheckedScene& input, const PathStart& start, std::size_t ind
     return end;
 }
 
+// One luminaire's light by the surface it meets: which surface takes most.
+struct SurfaceShares {
+    double lm = 0;
+    std::map<int, double> by_surface;
+    void add(int surface, double flux_lm) {
+        lm += flux_lm;
+        by_surface[surface] += flux_lm;
+    }
+    int main() const {
+        const auto most =
+            std::max_element(by_surface.begin(), by_surface.end(),
+                             [](const auto& a, const auto& b) { return a.second < b.second; });
+        return most == by_surface.end() ? -1 : most->first;
+    }
+};
+
 }  // namespace
+
+double near_distance(const PreparedScene& prepared) {
+    return std::min(kNearMeters, kNearDiagonalShare * prepared.diagonal_m);
+}
 
 LightPaths trace_light_paths(const CheckedScene& input, std::uint64_t& rays) {
     LightPaths out;
@@ -180,9 +232,14 @@ LightPaths trace_light_paths(const CheckedScene& input, std::uint64_t& rays) {
     for (const std::uint64_t r : chunk_rays) rays += r;
 
     // In path order: the sums do not depend on which thread traced what.
-    std::vector<double> luminaire_lm(scene.luminaires.size(), 0.0);
-    std::vector<std::size_t> directions(scene.luminaires.size(), 0);
-    std::vector<std::map<int, double>> first_black(scene.luminaires.size());
+    struct Sums {
+        double lm = 0;
+        std::size_t directions = 0;
+        SurfaceShares black, touching, near;
+        double near_reversed_lm = 0;
+    };
+    std::vector<Sums> sums(scene.luminaires.size());
+    const double near = near_distance(scene);
     for (std::size_t i = 0; i < starts.size(); ++i) {
         const PathStart& s = starts[i];
         const PathEnd& e = ends[i];
@@ -190,31 +247,40 @@ LightPaths trace_light_paths(const CheckedScene& input, std::uint64_t& rays) {
         if (e.lost_surface >= 0) out.lost.push_back({e.lost_surface, s.luminaire, s.flux_lm});
         if (s.luminaire < 0) continue;
         const auto l = static_cast<std::size_t>(s.luminaire);
-        luminaire_lm[l] += s.flux_lm;
+        Sums& sum = sums[l];
+        sum.lm += s.flux_lm;
+        ++sum.directions;
         LuminaireFirstHits& first = out.luminaires[l];
-        ++directions[l];
         first.directions_escaped += e.first.escaped() ? 1 : 0;
         first.directions_black += e.first.black ? 1 : 0;
-        if (e.first.escaped()) first.escaped += s.flux_lm;
-        if (e.first.black) {
-            first.black_back += s.flux_lm;
-            first_black[l][scene.pieces[static_cast<std::size_t>(e.first.piece)].surface] +=
-                s.flux_lm;
+        if (e.touched >= 0) sum.touching.add(e.touched, s.flux_lm);
+        if (e.first.escaped()) {
+            first.escaped += s.flux_lm;
+            continue;
+        }
+        const int surface = scene.pieces[static_cast<std::size_t>(e.first.piece)].surface;
+        if (e.first.black) sum.black.add(surface, s.flux_lm);
+        if (!e.first.black && e.first.t < near) {
+            sum.near.add(surface, s.flux_lm);
+            sum.near_reversed_lm += s.reversed_lm;
         }
     }
     for (std::size_t l = 0; l < scene.luminaires.size(); ++l) {
         LuminaireFirstHits& first = out.luminaires[l];
-        first.directions_escaped /= static_cast<double>(std::max<std::size_t>(directions[l], 1));
-        first.directions_black /= static_cast<double>(std::max<std::size_t>(directions[l], 1));
-        if (!(luminaire_lm[l] > 0)) continue;
-        first.escaped /= luminaire_lm[l];
-        first.black_back /= luminaire_lm[l];
-        for (const auto& [surface, lm] : first_black[l]) {
-            if (lm / luminaire_lm[l] > first.main_share) {
-                first.main_share = lm / luminaire_lm[l];
-                first.main_surface = surface;
-            }
-        }
+        const Sums& sum = sums[l];
+        first.directions_escaped /= static_cast<double>(std::max<std::size_t>(sum.directions, 1));
+        first.directions_black /= static_cast<double>(std::max<std::size_t>(sum.directions, 1));
+        if (!(sum.lm > 0)) continue;
+        first.escaped /= sum.lm;
+        first.black_back = sum.black.lm / sum.lm;
+        first.main_surface = sum.black.main();
+        if (first.main_surface >= 0)
+            first.main_share = sum.black.by_surface.at(first.main_surface) / sum.lm;
+        first.touching = sum.touching.lm / sum.lm;
+        first.touching_surface = sum.touching.main();
+        first.near = sum.near.lm / sum.lm;
+        first.near_reversed = sum.near_reversed_lm / sum.lm;
+        first.near_surface = sum.near.main();
     }
     return out;
 }

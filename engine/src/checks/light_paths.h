@@ -21,7 +21,23 @@ struct LuminaireFirstHits {
     /// black backs and that leave the model: what surrounds the luminaire.
     double directions_black = 0;
     double directions_escaped = 0;
+    /// Sent straight into the front of a surface it lies on (within kTouchDistance: placed on the
+    /// ceiling itself), and the surface that takes most of it (−1: none).
+    double touching = 0;
+    int touching_surface = -1;
+    /// Meets a surface first within near_distance(), and the surface that takes most of it; and
+    /// the same share of what it would send aimed the other way (its intensities mirrored
+    /// through its position): a downlight aimed up under the ceiling sends all of its light
+    /// there, and none the other way.
+    double near = 0;
+    double near_reversed = 0;
+    int near_surface = -1;
 };
+
+/// A luminaire this near a surface lies on it (metres): its light into the surface is lost.
+inline constexpr double kTouchDistance = 1e-3;
+/// What LuminaireFirstHits::near counts as near: 10 cm, or 5 % of a smaller model's diagonal.
+double near_distance(const PreparedScene& prepared);
 
 /// A path that ended on a black back: where, and what it carried.
 struct LostPath {

@@ -14,6 +14,14 @@ constexpr double kBehindShare = 0.25;
 // A luminaire this far outside the model's box (relative to its diagonal) is not a luminaire
 // on a surface that rounding put a hair outside.
 constexpr double kOutsideMargin = 1e-6;
+// A luminaire on a surface that sends this much of its light into it loses a share worth
+// saying, as back_face_light does for a surface: a bare lamp's half, or an uplight's part.
+constexpr double kTouchingShare = 0.05;
+// A luminaire aimed into the surface it hangs under sends most of its light there within a
+// few centimetres, and would send little there aimed the other way; a lamp in its shade or a
+// downlight in its can sends about as much near either way, and an isotropic source the same.
+constexpr double kNearShare = 0.5;
+constexpr double kReversedNearRatio = 0.25;
 
 }  // namespace
 
@@ -49,6 +57,27 @@ std::vector<bool> check_luminaire_placement(const CheckedScene& input, const Lig
                      ": is it above the ceiling or behind a wall, or is that surface "
                      "wound the wrong way?",
                  pointer});
+        } else if (first.touching >= kTouchingShare) {
+            out.push_back(
+                {"luminaire_faces_surface",
+                 who + " lies on " +
+                     surface_label(input.scene, static_cast<std::size_t>(first.touching_surface)) +
+                     " and sends " + percent(first.touching) +
+                     " of its light straight into it, where it is lost: move it a little off the "
+                     "surface, or aim it away from it",
+                 pointer});
+        } else if (first.near >= kNearShare &&
+                   first.near_reversed <= kReversedNearRatio * first.near) {
+            out.push_back(
+                {"luminaire_faces_surface",
+                 who + " sends " + percent(first.near) + " of its light onto " +
+                     surface_label(input.scene, static_cast<std::size_t>(first.near_surface)) +
+                     " within " + length_text(near_distance(input.prepared)) + ", and would send " +
+                     percent(first.near_reversed) +
+                     " there aimed the other way: is its aim reversed? \"aim\" is the "
+                     "direction of its light (its nadir), [0, 0, -1] for a downlight and the "
+                     "default",
+                 "/luminaires/" + std::to_string(i)});
         } else if (const double outside =
                        distance_outside(bounds, input.prepared.luminaires[i].position);
                    outside > kOutsideMargin * input.prepared.diagonal_m) {
