@@ -139,6 +139,17 @@ TEST(ModellingChecks, LuminairesNearTheCeilingAsMeantAreNotWarnedAbout) {
     }
 }
 
+// Points facing away from every luminaire measure what was meant where they lie on the surface
+// they measure: a ceiling's illuminance under downlights, 1 cm below it. The same points at
+// work-plane height are a normal reversed (tests/data/warnings).
+TEST(ModellingChecks, PointsOnTheCeilingFacingDownAreNotWarnedAbout) {
+    Scene scene = load(warnings_dir() / "workplane-facing-down.json");
+    ASSERT_EQ(check_modelling(scene).size(), 1u);
+    for (Vec3& p : scene.sensors[0].points) p.z = 2.99;
+    const std::vector<Warning> got = check_modelling(scene);
+    EXPECT_TRUE(got.empty()) << listed(got);
+}
+
 // An imported model's surfaces are named by the document surface that imports them.
 TEST(ModellingChecks, WarningsPointAtTheDocumentsSurfaces) {
     const Scene scene = load(warnings_dir() / "ceiling-wound-wrong.json");

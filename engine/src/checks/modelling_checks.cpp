@@ -9,6 +9,7 @@
 #include "checks/emitter_placement.h"
 #include "checks/light_paths.h"
 #include "checks/luminaire_placement.h"
+#include "checks/sensor_facing.h"
 #include "checks/sensor_placement.h"
 #include "checks/units_check.h"
 
@@ -76,7 +77,8 @@ std::vector<Warning> modelling_warnings(const CheckedScene& input, std::uint64_t
     const std::vector<bool> misplaced = check_luminaire_placement(input, paths, out);
     check_black_backs(input, paths, misplaced, out);
     check_emitter_placement(input, out, rays);
-    check_sensor_placement(input, out, rays);
+    const std::vector<bool> misplaced_sensors = check_sensor_placement(input, out, rays);
+    check_sensor_facing(input, misplaced_sensors, out, rays);
     return capped_per_code(std::move(out));
 }
 

@@ -1,7 +1,6 @@
 #include "checks/sensor_placement.h"
 
 #include <algorithm>
-#include <cstdio>
 
 #include "checks/side_hit.h"
 #include "checks/warning_text.h"
@@ -45,22 +44,17 @@ Place place_of(const CheckedScene& input, const Box& bounds, const Vec3& point, 
     return black > 0 && lit == 0 ? Place::outside : Place::fine;
 }
 
-std::string point_text(const Vec3& p) {
-    char text[96];
-    std::snprintf(text, sizeof text, "(%g, %g, %g)", p.x, p.y, p.z);
-    return text;
-}
-
 }  // namespace
 
-void check_sensor_placement(const CheckedScene& input, std::vector<Warning>& out,
-                            std::uint64_t& rays) {
+std::vector<bool> check_sensor_placement(const CheckedScene& input, std::vector<Warning>& out,
+                                         std::uint64_t& rays) {
     const PreparedScene& prepared = input.prepared;
     std::size_t total = 0;
     for (const PreparedSensorSet& set : prepared.sensors) total += set.points.size();
     const std::size_t stride =
         std::max<std::size_t>(1, (total + kMaxCheckedPoints - 1) / kMaxCheckedPoints);
     const Box bounds = model_bounds(prepared);
+    std::vector<bool> warned(prepared.sensors.size(), false);
     for (std::size_t s = 0; s < prepared.sensors.size(); ++s) {
         const std::vector<Vec3>& points = prepared.sensors[s].points;
         const std::size_t checked = (points.size() + stride - 1) / stride;
@@ -87,8 +81,10 @@ void check_sensor_placement(const CheckedScene& input, std::vector<Warning>& out
                 (count == 1 ? " lies " : " lie ") + where + " (point " + std::to_string(index) +
                 ", at " + point_text(given.points[index]) + ")";
             out.push_back({code, std::move(message), pointer});
+            warned[s] = true;
         }
     }
+    return warned;
 }
 
 }  // namespace radiant

@@ -44,4 +44,10 @@ std::string length_text(double meters) {
     return text;
 }
 
+std::string point_text(const Vec3& p) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%g, %g, %g)", p.x, p.y, p.z);
+    return text;
+}
+
 }  // namespace radiant

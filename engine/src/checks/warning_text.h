@@ -24,4 +24,7 @@ std::string percent(double share);
 /// A length in metres with two significant figures and a sensible unit ("5.7 km", "4 mm").
 std::string length_text(double meters);
 
+/// A point or direction as given: "(1.5, 2, 0.8)".
+std::string point_text(const Vec3& p);
+
 }  // namespace radiant

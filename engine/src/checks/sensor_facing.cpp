@@ -1,0 +1,102 @@
+#include "checks/sensor_facing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "checks/side_hit.h"
+#include "checks/warning_text.h"
+#include "formfactor/luminaire_light.h"
+
+namespace radiant {
+namespace {
+
+// Points of a set weighed, evenly spaced; emitting pieces weighed, evenly spaced (their power
+// scaled up to the whole), so that the check stays cheap beside a floor of many rooms.
+constexpr std::size_t kPointsPerSet = 64;
+constexpr std::size_t kMaxEmitters = 4096;
+constexpr double kOnSurface = 1e-3;  ///< metres
+// Only sets facing down are weighed: a work plane facing up under uplighters receives no direct
+// light either, and is right (its light comes from the ceiling).
+constexpr double kDownward = -0.5;
+
+// An emitting piece as a point source: its centre, front and power (lm).
+struct Emitter {
+    Vec3 centre, normal;
+    double power_lm = 0;
+};
+
+std::vector<Emitter> emitters_of(const PreparedScene& scene) {
+    std::vector<const Piece*> glowing;
+    for (const Piece& p : scene.pieces) {
+        if (luminance(scene.materials[static_cast<std::size_t>(p.material)].exitance_lm_m2) > 0)
+            glowing.push_back(&p);
+    }
+    const std::size_t stride = std::max<std::size_t>(1, glowing.size() / kMaxEmitters + 1);
+    std::vector<Emitter> out;
+    for (std::size_t i = 0; i < glowing.size(); i += stride) {
+        const Piece& p = *glowing[i];
+        Vec3 centre{0, 0, 0};
+        for (const Vec3& v : p.vertices) centre = centre + v;
+        centre = centre * (1.0 / static_cast<double>(p.vertices.size()));
+        const double exitance =
+            luminance(scene.materials[static_cast<std::size_t>(p.material)].exitance_lm_m2);
+        out.push_back({centre, p.normal, exitance * p.area_m2 * static_cast<double>(stride)});
+    }
+    return out;
+}
+
+// Direct illuminance at x facing n, unoccluded, from the luminaires and the emitters (lux).
+double direct_light(const PreparedScene& scene, const std::vector<Emitter>& emitters, const Vec3& x,
+                    const Vec3& n) {
+    double e = luminance(unoccluded_luminaire_irradiance_at(scene, x, n));
+    for (const Emitter& s : emitters) {
+        const Vec3 d = s.centre - x;
+        const double d2 = dot(d, d);
+        if (!(d2 > 0)) continue;
+        const double cos_receiver = dot(d, n), cos_emitter = -dot(d, s.normal);
+        if (cos_receiver <= 0 || cos_emitter <= 0) continue;
+        e += s.power_lm * cos_receiver * cos_emitter / (std::numbers::pi * d2 * d2);
+    }
+    return e;
+}
+
+}  // namespace
+
+void check_sensor_facing(const CheckedScene& input, const std::vector<bool>& skip,
+                         std::vector<Warning>& out, std::uint64_t& rays) {
+    const PreparedScene& scene = input.prepared;
+    const std::vector<Emitter> emitters = emitters_of(scene);
+    // The probe behind a point starts this far in front of it, so that it meets the surface the
+    // point lies on (side_hit() skips its first stretch).
+    const double lift = std::max(kOnSurface, 16 * input.visibility.epsilon());
+    for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
+        const SensorSet& given = input.scene.sensors[s];
+        const PreparedSensorSet& set = scene.sensors[s];
+        if ((s < skip.size() && skip[s]) || given.workplane || given.surrounding_of ||
+            set.kind != SensorKind::planar || set.points.empty() || set.normal.z > kDownward)
+            continue;
+        const std::size_t stride =
+            std::max<std::size_t>(1, (set.points.size() + kPointsPerSet - 1) / kPointsPerSet);
+        double facing = 0, away = 0;
+        std::size_t points = 0, measured = 0;
+        for (std::size_t i = 0; i < set.points.size(); i += stride) {
+            const Vec3& x = set.points[i];
+            facing += direct_light(scene, emitters, x, set.normal);
+            away += direct_light(scene, emitters, x, -set.normal);
+            ++points;
+            ++rays;
+            const SideHit behind = side_hit(input, x + set.normal * lift, -set.normal);
+            if (!behind.escaped() && behind.t < lift + kMeasuredGap) ++measured;
+        }
+        if (!(away > 0) || facing > kAwayShare * away || 2 * measured >= points) continue;
+        out.push_back({"sensor_faces_away",
+                       "sensor set " + quoted(given.name) + " faces " + point_text(given.normal) +
+                           ", away from the light: its points receive " + percent(facing / away) +
+                           " of the direct light they would facing the other way; is its "
+                           "normal reversed?",
+                       "/sensors/" + std::to_string(s) + "/normal"});
+    }
+}
+
+}  // namespace radiant
