@@ -150,6 +150,18 @@ TEST(ModellingChecks, PointsOnTheCeilingFacingDownAreNotWarnedAbout) {
     EXPECT_TRUE(got.empty()) << listed(got);
 }
 
+// A y-up model is lit as meant where nothing leans on z being up: luminaires aimed down its y,
+// or isotropic ones. Only aims along its floor (the z-up default) are a mistake (tests/data).
+TEST(ModellingChecks, AYUpModelLitAsMeantIsNotWarnedAbout) {
+    const Scene y_up = load(warnings_dir() / "y-up-room.json");
+    ASSERT_EQ(check_modelling(y_up).size(), 1u);
+    Scene aimed = y_up, isotropic = y_up;
+    for (Luminaire& l : aimed.luminaires) l.aim = {0, -1, 0};
+    for (Luminaire& l : isotropic.luminaires) l.distribution = Distribution::isotropic;
+    EXPECT_TRUE(check_modelling(aimed).empty()) << listed(check_modelling(aimed));
+    EXPECT_TRUE(check_modelling(isotropic).empty()) << listed(check_modelling(isotropic));
+}
+
 // An imported model's surfaces are named by the document surface that imports them.
 TEST(ModellingChecks, WarningsPointAtTheDocumentsSurfaces) {
     const Scene scene = load(warnings_dir() / "ceiling-wound-wrong.json");

@@ -12,6 +12,7 @@
 #include "checks/sensor_facing.h"
 #include "checks/sensor_placement.h"
 #include "checks/units_check.h"
+#include "checks/up_axis_check.h"
 
 namespace radiant {
 namespace {
@@ -72,6 +73,7 @@ std::vector<Warning> modelling_warnings(const CheckedScene& input, std::uint64_t
     std::vector<Warning> out;
     check_duplicate_names(input.scene, out);
     check_units(input.scene, input.prepared, out);
+    check_up_axis(input.scene, input.prepared, out);
     check_emission(input.scene, input.prepared, out);
     const LightPaths paths = trace_light_paths(input, rays);
     const std::vector<bool> misplaced = check_luminaire_placement(input, paths, out);
