@@ -192,6 +192,8 @@ struct Problem {
 struct SceneLimits {
     std::size_t max_surfaces = 200000;
     std::size_t max_vertices = 2000000;
+    /// Of one polygon or mesh face: triangulating one takes time in the square of its vertices.
+    std::size_t max_polygon_vertices = 10000;
     std::size_t max_sensor_points = 1000000;
     std::size_t max_luminaires = 100000;
     /// Light components (group × maintenance factor): each is a photon field and a gather.

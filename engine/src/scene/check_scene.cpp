@@ -123,7 +123,19 @@ void check_materials(const Scene& scene, Checker& check) {
     }
 }
 
-void check_mesh(const MeshGeometry& mesh, const std::string& base, Checker& check) {
+// A polygon or face of more vertices than `limit` is refused before it is triangulated, which
+// takes time in the square of its vertices (a 100 000-vertex star: 14 s).
+bool within_vertex_limit(std::size_t vertices, std::size_t limit, const std::string& pointer,
+                         const char* what, Checker& check) {
+    if (vertices <= limit) return true;
+    check.report(pointer, std::string(what) + " of " + std::to_string(vertices) +
+                              " vertices, over the limit of " + std::to_string(limit) +
+                              " for one; split it, or give it as a mesh of smaller faces");
+    return false;
+}
+
+void check_mesh(const MeshGeometry& mesh, const std::string& base, std::size_t max_face_vertices,
+                Checker& check) {
     const bool vertices_ok = check.finite_all(mesh.vertices, base + "/vertices");
     if (mesh.faces.empty()) check.report(base + "/faces", "a mesh needs at least one face");
     for (std::size_t k = 0; k < mesh.faces.size(); ++k) {
@@ -133,6 +145,7 @@ void check_mesh(const MeshGeometry& mesh, const std::string& base, Checker& chec
             check.report(p, "a face needs at least 3 vertices");
             continue;
         }
+        if (!within_vertex_limit(face.size(), max_face_vertices, p, "a face", check)) continue;
         std::vector<Vec3> corners;
         for (std::size_t m = 0; m < face.size(); ++m) {
             if (face[m] < 0 || static_cast<std::size_t>(face[m]) >= mesh.vertices.size()) {
@@ -147,7 +160,7 @@ void check_mesh(const MeshGeometry& mesh, const std::string& base, Checker& chec
     }
 }
 
-void check_surfaces(const Scene& scene, Checker& check) {
+void check_surfaces(const Scene& scene, const SceneLimits& limits, Checker& check) {
     std::unordered_set<std::string> materials;
     for (const Material& m : scene.materials) materials.insert(m.name);
     if (scene.surfaces.empty()) check.report("/surfaces", "the scene has no surfaces");
@@ -161,11 +174,13 @@ void check_surfaces(const Scene& scene, Checker& check) {
             const std::string p = base + "/polygon";
             if (polygon->size() < 3) {
                 check.report(p, "a polygon needs at least 3 vertices");
-            } else if (check.finite_all(*polygon, p)) {
+            } else if (within_vertex_limit(polygon->size(), limits.max_polygon_vertices, p,
+                                           "a polygon", check) &&
+                       check.finite_all(*polygon, p)) {
                 check.planar_polygon(*polygon, p, "polygon");
             }
         } else if (const auto* mesh = std::get_if<MeshGeometry>(&s.geometry)) {
-            check_mesh(*mesh, base + "/mesh", check);
+            check_mesh(*mesh, base + "/mesh", limits.max_polygon_vertices, check);
         } else {
             const auto& box = std::get<BoxGeometry>(s.geometry);
             // Both corners are checked, so that each bad one is reported.
@@ -280,7 +295,7 @@ std::vector<Problem> check_scene(const Scene& scene, const SceneLimits& limits) 
     Checker check(problems);
     check_limits(scene, limits, check);
     check_materials(scene, check);
-    check_surfaces(scene, check);
+    check_surfaces(scene, limits, check);
     check_luminaires(scene, check);
     check_sensors(scene, check);
     check_settings(scene.settings, check);
