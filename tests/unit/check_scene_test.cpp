@@ -87,7 +87,15 @@ TEST(CheckScene, PolygonsAndFacesOfTooManyVerticesAreRefused) {
     for (std::size_t k = 0; k <= limits.max_polygon_vertices; ++k)
         mesh.faces[1].push_back(static_cast<int>(k % 3));
     scene.surfaces[0].geometry = mesh;
-    EXPECT_EQ(pointers(scene), Pointers{"/surfaces/0/mesh/faces/1"});
+    EXPECT_EQ(
+        pointers(scene),
+        Pointers{"/surfaces/0/mesh/faces/1"});  // Polygons of many vertices count together: ten of
+                                                // the largest fit, the eleventh does not.
+    scene.surfaces.assign(10, scene.surfaces[0]);
+    for (Surface& s : scene.surfaces) s.geometry = circle(limits.max_polygon_vertices);
+    EXPECT_TRUE(check_scene(scene).empty());
+    scene.surfaces.push_back(scene.surfaces[0]);
+    EXPECT_EQ(pointers(scene), Pointers{"/surfaces"});
 }
 
 TEST(CheckScene, ToleranceIsRelativeToSize) {

@@ -194,6 +194,10 @@ struct SceneLimits {
     std::size_t max_vertices = 2000000;
     /// Of one polygon or mesh face: triangulating one takes time in the square of its vertices.
     std::size_t max_polygon_vertices = 10000;
+    /// Of all polygons and faces of over `large_polygon_vertices` each, together: ten of the
+    /// largest take about 1.5 s to triangulate.
+    std::size_t large_polygon_vertices = 1000;
+    std::size_t max_large_polygon_vertices = 100000;
     std::size_t max_sensor_points = 1000000;
     std::size_t max_luminaires = 100000;
     /// Light components (group × maintenance factor): each is a photon field and a gather.

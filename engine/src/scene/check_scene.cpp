@@ -264,18 +264,24 @@ void check_settings(const Settings& settings, Checker& check) {
 }
 
 void check_limits(const Scene& scene, const SceneLimits& limits, Checker& check) {
-    auto over = [&](const char* pointer, std::size_t count, std::size_t limit, const char* what) {
+    auto over = [&](const char* pointer, std::size_t count, std::size_t limit,
+                    const std::string& what) {
         if (count > limit) {
             check.report(pointer, std::to_string(count) + " " + what + ", over the limit of " +
                                       std::to_string(limit));
         }
     };
-    std::size_t vertices = 0;
+    std::size_t vertices = 0, large = 0;  // large: of polygons and faces of many vertices
+    auto count_large = [&](std::size_t n) {
+        if (n > limits.large_polygon_vertices) large += n;
+    };
     for (const Surface& s : scene.surfaces) {
         if (const auto* polygon = std::get_if<Polygon>(&s.geometry)) {
             vertices += polygon->size();
+            count_large(polygon->size());
         } else if (const auto* mesh = std::get_if<MeshGeometry>(&s.geometry)) {
             vertices += mesh->vertices.size();
+            for (const std::vector<int>& face : mesh->faces) count_large(face.size());
         } else {
             vertices += 8;
         }
@@ -284,6 +290,9 @@ void check_limits(const Scene& scene, const SceneLimits& limits, Checker& check)
     for (const SensorSet& s : scene.sensors) points += s.points.size();
     over("/surfaces", scene.surfaces.size(), limits.max_surfaces, "surfaces");
     over("/surfaces", vertices, limits.max_vertices, "vertices");
+    over("/surfaces", large, limits.max_large_polygon_vertices,
+         "vertices in polygons and faces of over " + std::to_string(limits.large_polygon_vertices) +
+             " vertices each");
     over("/luminaires", scene.luminaires.size(), limits.max_luminaires, "luminaires");
     over("/sensors", points, limits.max_sensor_points, "sensor points");
 }
