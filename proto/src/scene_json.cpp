@@ -810,7 +810,7 @@ ParseOutcome parse_scene(std::string_view json_text, const ParseLimits& limits,
     if (outcome.problems.empty()) outcome.problems = expand_workplanes(scene, limits.scene);
     if (outcome.problems.empty()) outcome.problems = expand_task_areas(scene, limits.scene);
     // The expanded points are known only now.
-    if (outcome.problems.empty()) outcome.problems = check_kept_sensor_values(scene, limits.scene);
+    if (outcome.problems.empty()) outcome.problems = check_sensor_totals(scene, limits.scene);
     if (outcome.problems.empty()) {
         outcome.scene = std::move(scene);
         outcome.refusal = Refusal::none;

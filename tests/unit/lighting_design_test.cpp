@@ -398,6 +398,15 @@ TEST(LightScenes, LimitsAreEnforcedOnTheTotalsWithTheirPointers) {
     ASSERT_TRUE(has_pointer(band, "/sensors"));
     EXPECT_NE(band[0].message.find("(1 + 2 groups + 2 light scenes)"), std::string::npos)
         << band[0].message;
+    // Each point takes a shadow ray to each luminaire (one here): 36 points fit 36 pairs, and
+    // the band the requirement adds does not.
+    limits = {};
+    limits.max_luminaire_sensor_pairs = 36;
+    EXPECT_TRUE(refused(two_groups(), limits).empty());
+    const auto rays = refused(doc, limits);
+    ASSERT_TRUE(has_pointer(rays, "/sensors"));
+    EXPECT_NE(rays[0].message.find("1 luminaires (a shadow ray each)"), std::string::npos)
+        << rays[0].message;
     // A hundred thousand luminaires, each its own group: refused, quickly (sorting the sources
     // into components by linear search took minutes).
     Scene many = parsed(office());

@@ -205,8 +205,12 @@ struct SceneLimits {
     std::size_t max_light_scenes = 256;
     std::size_t max_observers = 1000;
     /// Sensor values a result keeps: each point once, and once more per group and per light
-    /// scene when the scene has them (see check_kept_sensor_values()).
+    /// scene when the scene has them (see check_sensor_totals()).
     std::size_t max_kept_sensor_values = 20000000;
+    /// Sensor points × luminaires: each point takes a shadow ray to every luminaire, exactly,
+    /// whatever the method, and a time limit cannot cut that gather short (10⁹: about 45 s on
+    /// two cores).
+    std::size_t max_luminaire_sensor_pairs = 1000000000;
 };
 
 /// Semantic checks the JSON schema cannot express (geometry, references, ranges, finiteness).
@@ -218,11 +222,12 @@ std::vector<Problem> check_scene(const Scene& scene, const SceneLimits& limits =
 /// point at the sensor set. Thread-safe for distinct scenes.
 std::vector<Problem> expand_workplanes(Scene& scene, const SceneLimits& limits = {});
 
-/// Whether the values a result keeps per sensor point — every group's contribution and every
-/// light scene beside the main values — stay under SceneLimits::max_kept_sensor_values for the
-/// points the scene has. check_scene() calls it; call it again after expand_task_areas(), which
-/// adds points. Thread-safe; pure.
-std::vector<Problem> check_kept_sensor_values(const Scene& scene, const SceneLimits& limits = {});
+/// Whether the totals that grow with the sensor points stay within SceneLimits: the values a
+/// result keeps per point (every group's contribution and every light scene beside the main
+/// values, max_kept_sensor_values) and the points' shadow rays to the luminaires
+/// (max_luminaire_sensor_pairs). check_scene() calls it; call it again after
+/// expand_task_areas(), which adds points. Thread-safe; pure.
+std::vector<Problem> check_sensor_totals(const Scene& scene, const SceneLimits& limits = {});
 
 /// For every sensor set with a requirement (after expand_workplanes()): appends its immediate
 /// surrounding band (EN 12464-1: 0.5 m wide, its own grid, the standard's lower requirement) as

@@ -236,8 +236,7 @@ private:
         }
         over("/light_scenes", scene_.light_scenes.size(), limits_.max_light_scenes, "light scenes");
         over("/observers", scene_.observers.size(), limits_.max_observers, "observers");
-        for (Problem& p : check_kept_sensor_values(scene_, limits_))
-            problems_.push_back(std::move(p));
+        for (Problem& p : check_sensor_totals(scene_, limits_)) problems_.push_back(std::move(p));
         return problems_.size() == problems;
     }
 
@@ -260,7 +259,7 @@ void check_lighting_design(const Scene& scene, const SceneLimits& limits,
     DesignChecker(scene, limits, problems).run();
 }
 
-std::vector<Problem> check_kept_sensor_values(const Scene& scene, const SceneLimits& limits) {
+std::vector<Problem> check_sensor_totals(const Scene& scene, const SceneLimits& limits) {
     std::size_t points = 0;
     for (const SensorSet& s : scene.sensors) points += s.points.size();
     const LightComponents lc = light_components(scene);
@@ -270,12 +269,22 @@ std::vector<Problem> check_kept_sensor_values(const Scene& scene, const SceneLim
     const std::size_t values = points > limits.max_kept_sensor_values / copies
                                    ? limits.max_kept_sensor_values + 1
                                    : points * copies;
-    if (values <= limits.max_kept_sensor_values) return {};
-    return {{"/sensors", std::to_string(points) + " sensor points × (1 + " +
-                             std::to_string(lc.groups.size()) + " groups + " +
-                             std::to_string(scene.light_scenes.size()) +
-                             " light scenes) values to keep, over the limit of " +
-                             std::to_string(limits.max_kept_sensor_values)}};
+    std::vector<Problem> out;
+    if (values > limits.max_kept_sensor_values) {
+        out.push_back({"/sensors", std::to_string(points) + " sensor points × (1 + " +
+                                       std::to_string(lc.groups.size()) + " groups + " +
+                                       std::to_string(scene.light_scenes.size()) +
+                                       " light scenes) values to keep, over the limit of " +
+                                       std::to_string(limits.max_kept_sensor_values)});
+    }
+    const std::size_t luminaires = scene.luminaires.size();
+    if (luminaires > 0 && points > limits.max_luminaire_sensor_pairs / luminaires) {
+        out.push_back({"/sensors", std::to_string(points) + " sensor points × " +
+                                       std::to_string(luminaires) +
+                                       " luminaires (a shadow ray each), over the limit of " +
+                                       std::to_string(limits.max_luminaire_sensor_pairs)});
+    }
+    return out;
 }
 
 }  // namespace radiant
