@@ -11,29 +11,45 @@
 namespace radiant {
 namespace {
 
-// Points of a set weighed, evenly spaced; emitting pieces weighed, evenly spaced (their power
-// scaled up to the whole), so that the check stays cheap beside a floor of many rooms.
+// Points of a set weighed, evenly spaced, and of all sets (a scene may have a million sets of
+// a point each); luminaires and emitting pieces weighed, evenly spaced (their power scaled up
+// to the whole): the check stays cheap beside a floor of many rooms, or a hostile scene.
 constexpr std::size_t kPointsPerSet = 64;
-constexpr std::size_t kMaxEmitters = 4096;
+constexpr std::size_t kMaxPoints = 1024;
+constexpr std::size_t kMaxSources = 1024;
 constexpr double kOnSurface = 1e-3;  ///< metres
 // Only sets facing down are weighed: a work plane facing up under uplighters receives no direct
 // light either, and is right (its light comes from the ceiling).
 constexpr double kDownward = -0.5;
 
-// An emitting piece as a point source: its centre, front and power (lm).
+std::size_t stride_for(std::size_t count, std::size_t most) {
+    return std::max<std::size_t>(1, (count + most - 1) / most);
+}
+
+// The light sources weighed: luminaires (each standing for `weight` of them) and emitting
+// pieces as point sources (centre, front, power in lm, scaled the same way).
 struct Emitter {
     Vec3 centre, normal;
     double power_lm = 0;
 };
+struct Sources {
+    std::vector<const PreparedLuminaire*> luminaires;
+    double luminaire_weight = 1;
+    std::vector<Emitter> emitters;
+};
 
-std::vector<Emitter> emitters_of(const PreparedScene& scene) {
+Sources sources_of(const PreparedScene& scene) {
+    Sources out;
+    const std::size_t every = stride_for(scene.luminaires.size(), kMaxSources);
+    for (std::size_t i = 0; i < scene.luminaires.size(); i += every)
+        out.luminaires.push_back(&scene.luminaires[i]);
+    out.luminaire_weight = static_cast<double>(every);
     std::vector<const Piece*> glowing;
     for (const Piece& p : scene.pieces) {
         if (luminance(scene.materials[static_cast<std::size_t>(p.material)].exitance_lm_m2) > 0)
             glowing.push_back(&p);
     }
-    const std::size_t stride = std::max<std::size_t>(1, glowing.size() / kMaxEmitters + 1);
-    std::vector<Emitter> out;
+    const std::size_t stride = stride_for(glowing.size(), kMaxSources);
     for (std::size_t i = 0; i < glowing.size(); i += stride) {
         const Piece& p = *glowing[i];
         Vec3 centre{0, 0, 0};
@@ -41,16 +57,19 @@ std::vector<Emitter> emitters_of(const PreparedScene& scene) {
         centre = centre * (1.0 / static_cast<double>(p.vertices.size()));
         const double exitance =
             luminance(scene.materials[static_cast<std::size_t>(p.material)].exitance_lm_m2);
-        out.push_back({centre, p.normal, exitance * p.area_m2 * static_cast<double>(stride)});
+        out.emitters.push_back(
+            {centre, p.normal, exitance * p.area_m2 * static_cast<double>(stride)});
     }
     return out;
 }
 
-// Direct illuminance at x facing n, unoccluded, from the luminaires and the emitters (lux).
-double direct_light(const PreparedScene& scene, const std::vector<Emitter>& emitters, const Vec3& x,
-                    const Vec3& n) {
-    double e = luminance(unoccluded_luminaire_irradiance_at(scene, x, n));
-    for (const Emitter& s : emitters) {
+// Direct illuminance at x facing n, unoccluded, from the sources (lux).
+double direct_light(const Sources& sources, const Vec3& x, const Vec3& n) {
+    double e = 0;
+    for (const PreparedLuminaire* l : sources.luminaires)
+        e += direct_kernel_per_lm(*l, x, n) * luminance(l->flux_lm);
+    e *= sources.luminaire_weight;
+    for (const Emitter& s : sources.emitters) {
         const Vec3 d = s.centre - x;
         const double d2 = dot(d, d);
         if (!(d2 > 0)) continue;
@@ -66,7 +85,8 @@ double direct_light(const PreparedScene& scene, const std::vector<Emitter>& emit
 void check_sensor_facing(const CheckedScene& input, const std::vector<bool>& skip,
                          std::vector<Warning>& out, std::uint64_t& rays) {
     const PreparedScene& scene = input.prepared;
-    const std::vector<Emitter> emitters = emitters_of(scene);
+    const Sources sources = sources_of(scene);
+    std::size_t weighed = 0;  // points, of all sets
     // The probe behind a point starts this far in front of it, so that it meets the surface the
     // point lies on (side_hit() skips its first stretch).
     const double lift = std::max(kOnSurface, 16 * input.visibility.epsilon());
@@ -76,15 +96,16 @@ void check_sensor_facing(const CheckedScene& input, const std::vector<bool>& ski
         if ((s < skip.size() && skip[s]) || given.workplane || given.surrounding_of ||
             set.kind != SensorKind::planar || set.points.empty() || set.normal.z > kDownward)
             continue;
-        const std::size_t stride =
-            std::max<std::size_t>(1, (set.points.size() + kPointsPerSet - 1) / kPointsPerSet);
+        if (weighed >= kMaxPoints) break;
+        const std::size_t stride = stride_for(set.points.size(), kPointsPerSet);
         double facing = 0, away = 0;
         std::size_t points = 0, measured = 0;
         for (std::size_t i = 0; i < set.points.size(); i += stride) {
             const Vec3& x = set.points[i];
-            facing += direct_light(scene, emitters, x, set.normal);
-            away += direct_light(scene, emitters, x, -set.normal);
+            facing += direct_light(sources, x, set.normal);
+            away += direct_light(sources, x, -set.normal);
             ++points;
+            ++weighed;
             ++rays;
             const SideHit behind = side_hit(input, x + set.normal * lift, -set.normal);
             if (!behind.escaped() && behind.t < lift + kMeasuredGap) ++measured;
