@@ -160,6 +160,21 @@ TEST(ModellingChecks, AYUpModelLitAsMeantIsNotWarnedAbout) {
     for (Luminaire& l : isotropic.luminaires) l.distribution = Distribution::isotropic;
     EXPECT_TRUE(check_modelling(aimed).empty()) << listed(check_modelling(aimed));
     EXPECT_TRUE(check_modelling(isotropic).empty()) << listed(check_modelling(isotropic));
+    // A z-up room measured on its south wall (facing +y), lit by downlights along its north
+    // wall: near the top of y, and of z.
+    const proto::ParseOutcome z_up = proto::parse_scene(R"({"format": "radiant-scene/1",
+        "materials": {"w": {"reflectance": 0.5}},
+        "surfaces": [{"name": "room", "material": "w",
+                      "box": {"min": [0, 0, 0], "max": [6, 4, 3], "facing": "in"}}],
+        "luminaires": [{"name": "L1", "position": [2, 3.6, 2.95], "flux": 2000,
+                        "distribution": "lambertian"},
+                       {"name": "L2", "position": [4, 3.6, 2.95], "flux": 2000,
+                        "distribution": "lambertian"}],
+        "sensors": [{"name": "south wall", "normal": [0, 1, 0],
+                     "grid": {"origin": [0.5, 0.01, 0.5], "u": [5, 0, 0], "v": [0, 0, 2],
+                              "nu": 5, "nv": 2}}]})");
+    ASSERT_TRUE(z_up.ok());
+    EXPECT_TRUE(check_modelling(*z_up.scene).empty()) << listed(check_modelling(*z_up.scene));
 }
 
 // An imported model's surfaces are named by the document surface that imports them.

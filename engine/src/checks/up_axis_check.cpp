@@ -29,14 +29,18 @@ void check_up_axis(const Scene& scene, const PreparedScene& prepared, std::vecto
     if (facing_y == scene.sensors.size()) return;
     const Box bounds = model_bounds(prepared);
     const double top = bounds.hi.y - kTopShare * (bounds.hi.y - bounds.lo.y);
-    double aimed_lm = 0, level_lm = 0;
+    const double top_z = bounds.hi.z - kTopShare * (bounds.hi.z - bounds.lo.z);
+    double aimed_lm = 0, level_lm = 0, high_lm = 0;
     for (const PreparedLuminaire& l : prepared.luminaires) {
         if (l.distribution == Distribution::isotropic) continue;
         const double lm = luminance(l.flux_lm);
         aimed_lm += lm;
         if (l.position.y >= top && std::abs(l.aim.y) < kLevelAim) level_lm += lm;
+        if (l.position.z >= top_z) high_lm += lm;
     }
-    if (!(aimed_lm > 0) || level_lm < kMostFlux * aimed_lm) return;
+    // Luminaires near the top of z as well are a z-up room's, along one wall.
+    if (!(aimed_lm > 0) || level_lm < kMostFlux * aimed_lm || high_lm >= kMostFlux * aimed_lm)
+        return;
     out.push_back({"up_axis_suspect",
                    "the model looks y-up: sensor set " + quoted(scene.sensors[facing_y].name) +
                        " faces +y, and " + percent(level_lm / aimed_lm) +

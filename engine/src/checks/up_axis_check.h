@@ -12,7 +12,8 @@
 namespace radiant {
 
 /// up_axis_suspect when sensor points face +y and none face +z, and most of the aimed
-/// luminaires' flux hangs near the model's top along y with aims along the y-up floor: only
+/// luminaires' flux hangs near the model's top along y, not also near its top along z (a z-up
+/// room's downlights along its +y wall), with aims along the y-up floor: only
 /// then do the z-up defaults give a wrong answer (isotropic luminaires, or aims given in y,
 /// light a consistent y-up model as meant).
 void check_up_axis(const Scene& scene, const PreparedScene& prepared, std::vector<Warning>& out);
