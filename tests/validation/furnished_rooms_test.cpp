@@ -24,8 +24,9 @@ struct FurnishedRoom {
 
 std::ostream& operator<<(std::ostream& out, const FurnishedRoom& room) { return out << room.name; }
 
-// The examples' office (desks, chairs, shelves of books, plants: 17 300 triangles), a classroom
-// made for this test (tests/data/radiance/README.md) and the benchmark's two scene files of
+// The examples' office (desks, chairs, shelves of books, plants: 17 300 triangles), two
+// classrooms made for this test, one under panels and one under IES downlights
+// (tests/data/radiance/README.md), and the benchmark's two scene files of
 // rooms unlike them (docs/benchmark.md): a meeting room lit mostly from its ceiling by
 // up-lighting pendants and wall washers, an open-plan office in millimetres with open windows
 // and IES downlights, and a warehouse hall of pallet racking under IES high-bays (its reference
@@ -47,6 +48,8 @@ const FurnishedRoom kRooms[] = {
          "proto/examples/furnished-office/furnished-office.reference.csv"},
     {"classroom", testing::data_path("radiance/furnished-classroom.json"),
      testing::data_path("radiance/furnished-classroom.reference.csv")},
+    {"classroom_downlights", testing::data_path("radiance/classroom-downlights.json"),
+     testing::data_path("radiance/classroom-downlights.reference.csv")},
 };
 
 class FurnishedRooms : public ::testing::TestWithParam<FurnishedRoom> {};
