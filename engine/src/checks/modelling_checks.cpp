@@ -57,6 +57,10 @@ double distance_outside(const Box& box, const Vec3& x) {
     return d;
 }
 
+std::size_t stride_for(std::size_t count, std::size_t most) {
+    return std::max<std::size_t>(1, (count + most - 1) / most);
+}
+
 EmittedLight emitted_light(const PreparedScene& prepared) {
     EmittedLight out;
     for (const PreparedLuminaire& l : prepared.luminaires)

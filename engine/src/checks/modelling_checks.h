@@ -31,6 +31,9 @@ Box model_bounds(const PreparedScene& prepared);
 /// How far `x` lies outside `box` (metres; 0 inside or on it).
 double distance_outside(const Box& box, const Vec3& x);
 
+/// The stride that takes at most `most` of `count` items, evenly spaced (at least 1).
+std::size_t stride_for(std::size_t count, std::size_t most);
+
 /// The photometric flux (lm) the scene emits: from luminaires, and from emitting surfaces.
 struct EmittedLight {
     double luminaires_lm = 0;

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "checks/side_hit.h"
 #include "checks/warning_text.h"
 #include "formfactor/luminaire_light.h"
+#include "formfactor/quadrature.h"
 
 namespace radiant {
 namespace {
@@ -21,10 +23,6 @@ constexpr double kOnSurface = 1e-3;  ///< metres
 // Only sets facing down are weighed: a work plane facing up under uplighters receives no direct
 // light either, and is right (its light comes from the ceiling).
 constexpr double kDownward = -0.5;
-
-std::size_t stride_for(std::size_t count, std::size_t most) {
-    return std::max<std::size_t>(1, (count + most - 1) / most);
-}
 
 // The light sources weighed: luminaires (each standing for `weight` of them) and emitting
 // pieces as point sources (centre, front, power in lm, scaled the same way).
@@ -44,21 +42,17 @@ Sources sources_of(const PreparedScene& scene) {
     for (std::size_t i = 0; i < scene.luminaires.size(); i += every)
         out.luminaires.push_back(&scene.luminaires[i]);
     out.luminaire_weight = static_cast<double>(every);
-    std::vector<const Piece*> glowing;
+    std::vector<std::pair<const Piece*, double>> glowing;  // with its exitance (lm/m²)
     for (const Piece& p : scene.pieces) {
-        if (luminance(scene.materials[static_cast<std::size_t>(p.material)].exitance_lm_m2) > 0)
-            glowing.push_back(&p);
+        const double exitance =
+            luminance(scene.materials[static_cast<std::size_t>(p.material)].exitance_lm_m2);
+        if (exitance > 0) glowing.emplace_back(&p, exitance);
     }
     const std::size_t stride = stride_for(glowing.size(), kMaxSources);
     for (std::size_t i = 0; i < glowing.size(); i += stride) {
-        const Piece& p = *glowing[i];
-        Vec3 centre{0, 0, 0};
-        for (const Vec3& v : p.vertices) centre = centre + v;
-        centre = centre * (1.0 / static_cast<double>(p.vertices.size()));
-        const double exitance =
-            luminance(scene.materials[static_cast<std::size_t>(p.material)].exitance_lm_m2);
-        out.emitters.push_back(
-            {centre, p.normal, exitance * p.area_m2 * static_cast<double>(stride)});
+        const auto& [p, exitance] = glowing[i];
+        out.emitters.push_back({polygon_centroid(p->vertices), p->normal,
+                                exitance * p->area_m2 * static_cast<double>(stride)});
     }
     return out;
 }

@@ -51,8 +51,7 @@ std::vector<bool> check_sensor_placement(const CheckedScene& input, std::vector<
     const PreparedScene& prepared = input.prepared;
     std::size_t total = 0;
     for (const PreparedSensorSet& set : prepared.sensors) total += set.points.size();
-    const std::size_t stride =
-        std::max<std::size_t>(1, (total + kMaxCheckedPoints - 1) / kMaxCheckedPoints);
+    const std::size_t stride = stride_for(total, kMaxCheckedPoints);
     const Box bounds = model_bounds(prepared);
     std::vector<bool> warned(prepared.sensors.size(), false);
     for (std::size_t s = 0; s < prepared.sensors.size(); ++s) {
