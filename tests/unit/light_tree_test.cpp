@@ -197,7 +197,7 @@ Mean mean_of(int n, const Sample& sample) {
 TEST(LightSources, SampleTheExactDirectLightOfManySourcesOnAverage) {
     for (const bool wall : {false, true}) {
         const PreparedScene scene = prepare_scene(hall(wall));
-        const ElementMesh mesh(scene, 1.0);
+        const ElementMesh mesh(scene, {1.0});
         const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
         const LightSources sources(scene, visibility->epsilon());
         const Vec3 up{0, 0, 1};
@@ -288,7 +288,7 @@ TEST(LightSources, ASensorBesideALampsBulbSamplesEachPieceItSees) {
         }
     }
     const PreparedScene prepared = prepare_scene(scene);
-    const ElementMesh mesh(prepared, 1.0);
+    const ElementMesh mesh(prepared, {1.0});
     const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
     const LightSources sources(prepared, visibility->epsilon());
     const Vec3 x = Vec3{0.5, 0.1, 0.8} - prepared.world_origin, up{0, 0, 1};
@@ -315,7 +315,7 @@ TEST(LightSources, EachEmittingSurfaceGetsADrawOfItsOwn) {
     scene.surfaces.push_back(
         testing::box_surface("box", "black", {0.8, -0.2, 1.8}, {1.2, 0.2, 2.2}, false));
     const PreparedScene prepared = prepare_scene(scene);
-    const ElementMesh mesh(prepared, 1.0);
+    const ElementMesh mesh(prepared, {1.0});
     const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
     const LightSources sources(prepared, visibility->epsilon());
     const Vec3 x = Vec3{0.6, 0.1, 0} - prepared.world_origin, up{0, 0, 1};
@@ -346,7 +346,7 @@ TEST(LightSources, APartlyShadedPanelGivesItsOpenPartsLight) {
         testing::polygon_surface("shade", "black", testing::ceiling_rect(0, 0.7, 0, 2, 2.999)));
     scene.sensors.push_back(testing::sensor_points("point", {{1.5, 1, 0.8}}));
     const PreparedScene prepared = prepare_scene(scene);
-    const ElementMesh mesh(prepared, 1.0);
+    const ElementMesh mesh(prepared, {1.0});
     const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
     const LightSources sources(prepared, visibility->epsilon());
     const Vec3 x = prepared.sensors[0].points[0], up{0, 0, 1}, down{0, 0, -1};

@@ -36,7 +36,7 @@ Scene panel_room_with_sensors() {
 GatheredPoint first_point(const PreparedScene& prepared, double edge, std::size_t photons,
                           int sets) {
     const auto never = [] { return false; };
-    const ElementMesh mesh(prepared, edge);
+    const ElementMesh mesh(prepared, {edge});
     const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
     const LightSources sources(prepared, visibility->epsilon());
     PhotonField field(prepared, mesh, 5);
@@ -59,7 +59,7 @@ double rms_relative_error(const std::vector<double>& values, const std::vector<d
 TEST(ElementMesh, CutsPiecesToTheEdgeAndKeepsTheirArea) {
     const PreparedScene scene = prepare_scene(panel_room_with_sensors());
     const double edge = 0.3;
-    const ElementMesh mesh(scene, edge);
+    const ElementMesh mesh(scene, {edge});
     std::vector<double> area(scene.pieces.size(), 0.0);
     for (std::size_t i = 0; i < mesh.size(); ++i) {
         const MeshElement& e = mesh[i];
@@ -82,6 +82,41 @@ TEST(ElementMesh, CutsPiecesToTheEdgeAndKeepsTheirArea) {
         EXPECT_NEAR(area[p], scene.pieces[p].area_m2, 1e-9 * scene.pieces[p].area_m2);
 }
 
+// Near a luminaire elements shrink with their distance from it (a lamp's light varies over
+// that distance), down to an eighth of the edge; beyond its reach they keep the edge. Pieces
+// keep their area, and count() says what the mesh holds.
+TEST(ElementMesh, ElementsNearALuminaireShrinkWithTheDistance) {
+    Scene scene = panel_room_with_sensors();
+    scene.luminaires.push_back(testing::luminaire("lamp", {1, 1, 0.5}, 800));
+    const PreparedScene prepared = prepare_scene(scene);
+    const Vec3 lamp = prepared.luminaires.at(0).position;
+    const ElementSizing sizing{0.4, 1.2};
+    const ElementMesh mesh(prepared, sizing);
+    std::vector<double> area(prepared.pieces.size(), 0.0);
+    double finest = sizing.max_edge_m;
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+        const Triangle& t = mesh[i].triangle;
+        const double longest = std::max({length(t.b - t.a), length(t.c - t.b), length(t.a - t.c)});
+        const double apart = length((t.a + t.b + t.c) / 3.0 - lamp);
+        EXPECT_LE(longest, sizing.max_edge_m * (1 + 1e-12));
+        EXPECT_LE(longest, sizing.max_edge_m *
+                               std::max(apart / sizing.light_reach_m, ElementSizing::kFinest) *
+                               (1 + 1e-12));
+        if (apart > sizing.light_reach_m + sizing.max_edge_m) {
+            EXPECT_GT(longest, sizing.max_edge_m / 4) << "element " << i;
+        }
+        finest = std::min(finest, longest);
+        area[static_cast<std::size_t>(mesh[i].piece)] += mesh[i].area_m2;
+    }
+    EXPECT_LT(finest, sizing.max_edge_m / 2);
+    EXPECT_GT(mesh.size(), ElementMesh(prepared, {sizing.max_edge_m}).size());
+    for (std::size_t p = 0; p < prepared.pieces.size(); ++p)
+        EXPECT_NEAR(area[p], prepared.pieces[p].area_m2, 1e-9 * prepared.pieces[p].area_m2);
+    const ElementCount counted = ElementMesh::count(prepared, sizing);
+    EXPECT_EQ(counted.elements, mesh.size());
+    EXPECT_EQ(counted.sides, mesh.sides().size());
+}
+
 // A rack's beam (24.3 m by 12 cm) and a long thin triangle are cut into a strip of cells whose
 // two triangles are each other's coarser half, four elements per edge length along them (cells
 // half an edge long), not the 1 458 that bisecting the beam's triangles made; count() says what
@@ -95,7 +130,7 @@ TEST(ElementMesh, CutsLongStripsIntoAsFewElementsAsTheirLength) {
         testing::polygon_surface("blade", "steel", {{0, 2, 1}, {12, 2.05, 1}, {0, 2.1, 1}}));
     const PreparedScene prepared = prepare_scene(scene);
     const double edge = 0.71;
-    const ElementMesh mesh(prepared, edge);
+    const ElementMesh mesh(prepared, {edge});
     std::map<int, std::size_t> per_piece;
     std::map<int, double> area;
     std::size_t paired = 0;
@@ -117,7 +152,7 @@ TEST(ElementMesh, CutsLongStripsIntoAsFewElementsAsTheirLength) {
     EXPECT_LE(per_piece[0], 2 * static_cast<std::size_t>(std::ceil(2 * 24.3 / edge)) + 2);
     EXPECT_LE(per_piece[1], 2 * static_cast<std::size_t>(std::ceil(2 * 12 / edge)) + 2);
     EXPECT_GE(paired, mesh.size() * 9 / 10);  // the strip's cells, all but a few at the tips
-    const ElementCount counted = ElementMesh::count(prepared, edge);
+    const ElementCount counted = ElementMesh::count(prepared, {edge});
     EXPECT_EQ(counted.elements, mesh.size());
     EXPECT_EQ(counted.sides, mesh.sides().size());
 }
@@ -139,7 +174,7 @@ TEST(ElementMesh, OpenAreasLeaveOutWhatASurfaceRightInFrontHides) {
     std::reverse(board.begin(), board.end());
     scene.surfaces.push_back(testing::polygon_surface("board", "wall", board));
     const PreparedScene prepared = prepare_scene(scene);
-    ElementMesh mesh(prepared, 0.1);
+    ElementMesh mesh(prepared, {0.1});
     const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
     std::uint64_t rays = 0;
     mesh.measure_open_areas(*visibility, 0.02, rays);
@@ -418,7 +453,7 @@ TEST(MonteCarlo, LightInAHiddenGapIsAbsorbedThere) {
 // sides' whole area (they have no open area to spread it over), not darkness.
 TEST(PhotonField, AHiddenSideIsLitByWhatEntersItsGap) {
     const PreparedScene prepared = prepare_scene(books_under_a_lamp(0.5, 0.5));
-    ElementMesh mesh(prepared, 0.05);
+    ElementMesh mesh(prepared, {0.05});
     const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
     std::uint64_t rays = 0;
     mesh.measure_open_areas(*visibility, 0.02, rays);
@@ -534,7 +569,7 @@ TEST(SensorGather, RaysAimedAtBrightSidesKeepTheMeanAndCutTheSpread) {
         testing::luminaire("bulb", {0, 0, 1.7}, 1000, Distribution::isotropic));
     scene.sensors.push_back(testing::sensor_points("below", {{0.2, 0.1, 0.75}}));
     const PreparedScene prepared = prepare_scene(scene);
-    const ElementMesh mesh(prepared, 0.05);
+    const ElementMesh mesh(prepared, {0.05});
     const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
     const LightSources sources(prepared, visibility->epsilon());
     PhotonField field(prepared, mesh, 5);

@@ -1,8 +1,11 @@
 #include "montecarlo/element_mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <optional>
+#include <unordered_map>
 
 #include "geometry/polygon_split.h"
 #include "parallel/fork_join.h"
@@ -27,6 +30,134 @@ bool halve(const Triangle& t, double h, Triangle& first, Triangle& second) {
     return true;
 }
 
+// A compact light source: a luminaire, or an emitting surface at most half the reach across (a
+// lamp's bulb, a downlight's disc), as a ball.
+struct CompactLight {
+    Vec3 centre;
+    double radius = 0;
+};
+
+// The longest edge each triangle may keep (ElementSizing). Lights within a quarter of the reach
+// of each other count as one (so that a swarm of tiny emitters costs no more than a lamp); those
+// within reach of a piece are found once, on a grid of cells as wide as the reach, and each of
+// its triangles is sized by the nearest of them.
+class EdgeLimit {
+public:
+    EdgeLimit(const PreparedScene& scene, const ElementSizing& sizing)
+        : h_(std::max(sizing.max_edge_m, 1e-9)), reach_(std::max(sizing.light_reach_m, 0.0)) {
+        if (!(reach_ > 0)) return;
+        std::vector<CompactLight> found;
+        for (const PreparedLuminaire& l : scene.luminaires) found.push_back({l.position, 0});
+        for (const CompactLight& l : compact_emitters(scene, reach_ / 4)) found.push_back(l);
+        // Merged by cells a quarter of the reach wide: each cell's lights as one ball.
+        std::unordered_map<std::size_t, std::vector<CompactLight>> merged;
+        for (const CompactLight& l : found) merged[key(cell_of(l.centre, reach_ / 4))].push_back(l);
+        for (const auto& [cell, members] : merged) {
+            Vec3 centre{0, 0, 0};
+            for (const CompactLight& l : members) centre = centre + l.centre;
+            centre = centre / static_cast<double>(members.size());
+            double radius = 0;
+            for (const CompactLight& l : members)
+                radius = std::max(radius, length(l.centre - centre) + l.radius);
+            lights_.push_back({centre, radius});
+            cells_[key(cell_of(centre, reach_))].push_back(lights_.back());
+        }
+    }
+
+    double max_edge() const { return h_; }
+
+    // The lights within reach of the bounds of `v`.
+    std::vector<CompactLight> near(const std::vector<Vec3>& v) const {
+        std::vector<CompactLight> out;
+        if (lights_.empty()) return out;
+        Vec3 lo = v[0], hi = v[0];
+        for (const Vec3& p : v) {
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+        }
+        // A light's ball may reach a cell beside its centre's.
+        const double margin = reach_ * 1.5;
+        const Vec3 r{margin, margin, margin};
+        const std::array<double, 3> a = cell_of(lo - r, reach_), b = cell_of(hi + r, reach_);
+        const double cells = (b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1);
+        const auto within = [&](const CompactLight& l) {
+            const Vec3& p = l.centre;
+            const Vec3 d{std::max({lo.x - p.x, 0.0, p.x - hi.x}),
+                         std::max({lo.y - p.y, 0.0, p.y - hi.y}),
+                         std::max({lo.z - p.z, 0.0, p.z - hi.z})};
+            return length(d) - l.radius <= reach_;
+        };
+        // A piece wider than the lights are many (a floor slab) scans them all.
+        if (cells > static_cast<double>(lights_.size())) {
+            for (const CompactLight& l : lights_)
+                if (within(l)) out.push_back(l);
+            return out;
+        }
+        for (double x = a[0]; x <= b[0]; ++x) {
+            for (double y = a[1]; y <= b[1]; ++y) {
+                for (double z = a[2]; z <= b[2]; ++z) {
+                    const auto list = cells_.find(key({x, y, z}));
+                    if (list == cells_.end()) continue;
+                    for (const CompactLight& l : list->second)
+                        if (within(l)) out.push_back(l);
+                }
+            }
+        }
+        return out;
+    }
+
+    // The edge `t` may keep, with `lights` those near its piece.
+    double of(const Triangle& t, const std::vector<CompactLight>& lights) const {
+        if (lights.empty()) return h_;
+        const Vec3 centre = (t.a + t.b + t.c) / 3.0;
+        const double extent =
+            std::sqrt(std::max({length_squared(t.a - centre), length_squared(t.b - centre),
+                                length_squared(t.c - centre)}));
+        double nearest = reach_;
+        for (const CompactLight& l : lights)
+            nearest = std::min(nearest, length(l.centre - centre) - extent - l.radius);
+        return h_ * std::clamp(nearest / reach_, ElementSizing::kFinest, 1.0);
+    }
+
+private:
+    // Each emitting surface whose bounding ball's radius is at most `widest`, as that ball.
+    static std::vector<CompactLight> compact_emitters(const PreparedScene& scene, double widest) {
+        const std::size_t surfaces = scene.surface_names.size();
+        std::vector<Vec3> lo(surfaces), hi(surfaces);
+        std::vector<bool> emits(surfaces, false), seen(surfaces, false);
+        for (const Piece& piece : scene.pieces) {
+            const auto s = static_cast<std::size_t>(piece.surface);
+            if (!scene.materials[static_cast<std::size_t>(piece.material)].emits()) continue;
+            emits[s] = true;
+            for (const Vec3& p : piece.vertices) {
+                if (!seen[s]) lo[s] = hi[s] = p;
+                seen[s] = true;
+                lo[s] = {std::min(lo[s].x, p.x), std::min(lo[s].y, p.y), std::min(lo[s].z, p.z)};
+                hi[s] = {std::max(hi[s].x, p.x), std::max(hi[s].y, p.y), std::max(hi[s].z, p.z)};
+            }
+        }
+        std::vector<CompactLight> out;
+        for (std::size_t s = 0; s < surfaces; ++s) {
+            const double radius = 0.5 * length(hi[s] - lo[s]);
+            if (emits[s] && radius <= widest) out.push_back({0.5 * (lo[s] + hi[s]), radius});
+        }
+        return out;
+    }
+    static std::array<double, 3> cell_of(const Vec3& p, double size) {
+        return {std::floor(p.x / size), std::floor(p.y / size), std::floor(p.z / size)};
+    }
+    static std::size_t key(const std::array<double, 3>& c) {
+        // Cells whose keys collide share a list: `near` still keeps only what is within reach.
+        const std::hash<double> hash;
+        return hash(c[0]) ^ (hash(c[1]) * 0x9e3779b97f4a7c15ULL) ^
+               (hash(c[2]) * 0xff51afd7ed558ccdULL);
+    }
+
+    double h_, reach_;
+    std::vector<CompactLight> lights_;
+    std::unordered_map<std::size_t, std::vector<CompactLight>> cells_;
+};
+
 // Collects elements (or only counts them, without `out`).
 struct Elements {
     std::vector<MeshElement>* out;
@@ -49,13 +180,14 @@ struct Elements {
         (*out)[static_cast<std::size_t>(second)].sibling = first;
     }
 
-    // Bisects `t` across its longest edge until every edge is at most `h`. Returns the
-    // element's index when `t` needed no split, else −1.
-    int bisect(const Triangle& t, const MeshElement& proto, double h) {
+    // Bisects `t` across its longest edge until every edge is within `limit` (with `lights`
+    // near its piece). Returns the element's index when `t` needed no split, else −1.
+    int bisect(const Triangle& t, const MeshElement& proto, const EdgeLimit& limit,
+               const std::vector<CompactLight>& lights) {
         Triangle first, second;
-        if (!halve(t, h, first, second)) return add(t, proto);
-        const int a = bisect(first, proto, h);
-        pair(a, bisect(second, proto, h));
+        if (!halve(t, limit.of(t, lights), first, second)) return add(t, proto);
+        const int a = bisect(first, proto, limit, lights);
+        pair(a, bisect(second, proto, limit, lights));
         return -1;
     }
 };
@@ -124,12 +256,13 @@ void for_each_cell(const std::vector<Vec3>& v, const Strip& strip, const Visit& 
     }
 }
 
-// How many elements bisecting `t` to fit within h makes, counted up to just past `limit`.
-std::size_t bisection_count(const Triangle& t, double h, std::size_t limit) {
+// How many elements bisecting `t` makes, counted up to just past `most`.
+std::size_t bisection_count(const Triangle& t, const EdgeLimit& limit,
+                            const std::vector<CompactLight>& lights, std::size_t most) {
     Triangle first, second;
-    if (!halve(t, h, first, second)) return 1;
-    const std::size_t a = bisection_count(first, h, limit);
-    return a > limit ? a : a + bisection_count(second, h, limit - a);
+    if (!halve(t, limit.of(t, lights), first, second)) return 1;
+    const std::size_t a = bisection_count(first, limit, lights, most);
+    return a > most ? a : a + bisection_count(second, limit, lights, most - a);
 }
 
 // A strip's cells replace bisection only where bisection makes more than this many times their
@@ -138,8 +271,10 @@ std::size_t bisection_count(const Triangle& t, double h, std::size_t limit) {
 constexpr std::size_t kStripGain = 2;
 
 // One piece's elements: a narrow piece's strip of cells where bisection would make slivers by
-// the score, else its fan of triangles bisected to fit within `h`.
-void split_piece(const Piece& piece, int index, double h, Elements& elements) {
+// the score, else its fan of triangles bisected to fit within `limit`.
+void split_piece(const Piece& piece, int index, const EdgeLimit& limit, Elements& elements) {
+    const double h = limit.max_edge();
+    const std::vector<CompactLight> lights = limit.near(piece.vertices);
     MeshElement proto;
     proto.normal = piece.normal;
     proto.piece = index;
@@ -151,33 +286,33 @@ void split_piece(const Piece& piece, int index, double h, Elements& elements) {
         fits = length(v[(k + 1) % v.size()] - v[k]) <= h;
     const std::optional<Strip> strip = fits ? std::nullopt : strip_of(piece, h);
     // A strip's cells are quadrilaterals but for its ends: about two elements each.
-    const std::size_t limit = strip ? kStripGain * 2 * strip->cells : 0;
+    const std::size_t most = strip ? kStripGain * 2 * strip->cells : 0;
     std::size_t bisected = 0;
-    for (std::size_t k = 1; k + 1 < v.size() && strip && bisected <= limit; ++k)
-        bisected += bisection_count({v[0], v[k], v[k + 1]}, h, limit - bisected);
-    if (!strip || bisected <= limit) {
+    for (std::size_t k = 1; k + 1 < v.size() && strip && bisected <= most; ++k)
+        bisected += bisection_count({v[0], v[k], v[k + 1]}, limit, lights, most - bisected);
+    if (!strip || bisected <= most) {
         // Convex pieces: a fan from the first vertex.
         for (std::size_t k = 1; k + 1 < v.size(); ++k)
-            elements.bisect({v[0], v[k], v[k + 1]}, proto, h);
+            elements.bisect({v[0], v[k], v[k + 1]}, proto, limit, lights);
         return;
     }
     for_each_cell(v, *strip, [&](const std::vector<Vec3>& cell) {
         std::vector<int> made;
         for (std::size_t k = 1; k + 1 < cell.size(); ++k)
-            made.push_back(elements.bisect({cell[0], cell[k], cell[k + 1]}, proto, h));
+            made.push_back(elements.bisect({cell[0], cell[k], cell[k + 1]}, proto, limit, lights));
         if (made.size() == 2) elements.pair(made[0], made[1]);
     });
 }
 
 }  // namespace
 
-ElementCount ElementMesh::count(const PreparedScene& scene, double max_edge_m) {
-    const double h = std::max(max_edge_m, 1e-9);
+ElementCount ElementMesh::count(const PreparedScene& scene, const ElementSizing& sizing) {
+    const EdgeLimit limit(scene, sizing);
     ElementCount out;
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
         Elements elements{nullptr, 0};
         const Piece& piece = scene.pieces[i];
-        split_piece(piece, static_cast<int>(i), h, elements);
+        split_piece(piece, static_cast<int>(i), limit, elements);
         out.elements += elements.count;
         const bool two_sided = scene.materials[static_cast<std::size_t>(piece.material)].two_sided;
         out.sides += elements.count * (two_sided ? 2 : 1);
@@ -185,15 +320,15 @@ ElementCount ElementMesh::count(const PreparedScene& scene, double max_edge_m) {
     return out;
 }
 
-ElementMesh::ElementMesh(const PreparedScene& scene, double max_edge_m) {
-    const double h = std::max(max_edge_m, 1e-9);
+ElementMesh::ElementMesh(const PreparedScene& scene, const ElementSizing& sizing) {
     // Counted first, so the lists hold exactly their elements (the memory budget's estimate).
-    const ElementCount counted = count(scene, h);
+    const ElementCount counted = count(scene, sizing);
     elements_.reserve(counted.elements);
     sides_.reserve(counted.sides);
+    const EdgeLimit limit(scene, sizing);
     Elements elements{&elements_, 0};
     for (std::size_t i = 0; i < scene.pieces.size(); ++i)
-        split_piece(scene.pieces[i], static_cast<int>(i), h, elements);
+        split_piece(scene.pieces[i], static_cast<int>(i), limit, elements);
     for (std::size_t i = 0; i < elements_.size(); ++i) {
         MeshElement& e = elements_[i];
         e.front = static_cast<int>(sides_.size());
