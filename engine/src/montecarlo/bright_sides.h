@@ -38,8 +38,15 @@ struct AimedRay {
 
 class BrightSides {
 public:
-    /// At most this many sides per point, the most light first.
-    static constexpr std::size_t kMaxAimed = 1024;
+    /// Sides per point, the most light first: at most kMaxAimed where the points' lists fit in
+    /// kAimsBytes, never fewer than kMinAimed. Elements cut finer near lamps split a shade's
+    /// bright inside into thousands of sides; a living room's points under its pendant, aiming at
+    /// 1 024 of them, spread 2.3 times more per ray set than aiming at all.
+    static constexpr std::size_t kMinAimed = 1024;
+    static constexpr std::size_t kMaxAimed = 4096;
+    static constexpr std::size_t kAimsBytes = std::size_t{64} << 20;
+    /// The sides per point for `points` points that aim.
+    static std::size_t most_aimed(std::size_t points);
 
     BrightSides() = default;
     /// The sides whose reflected light on `field` (all of it, direct and reflected) is well above
@@ -48,9 +55,10 @@ public:
 
     bool empty() const { return sides_.empty(); }
 
-    /// The sides worth aiming at from x (unit normal n), each by roughly the light it sends to x
-    /// unoccluded; none where together they send little beside the room's mean.
-    Aim aim(const Vec3& x, const Vec3& n) const;
+    /// The sides worth aiming at from x (unit normal n), at most `most`, each by roughly the
+    /// light it sends to x unoccluded; none where together they send little beside the room's
+    /// mean.
+    Aim aim(const Vec3& x, const Vec3& n, std::size_t most) const;
 
     /// A ray from `origin` toward a point drawn uniformly on a side of `aimed`, the side picked by
     /// uniform u (stratified by the caller), the point by `rng`.

@@ -252,10 +252,14 @@ void SensorGather::aim_at_bright_sides(const PhotonField& field, std::size_t max
     bright_ = BrightSides(scene_, mesh_, field);
     if (bright_.empty()) return;
     const std::size_t before = aims_bytes();
+    const auto aims = [](const Point& p) {
+        return p.set_direct.empty() && p.receiver.fixed() && !p.background;
+    };
+    const std::size_t most = BrightSides::most_aimed(
+        static_cast<std::size_t>(std::count_if(points_.begin(), points_.end(), aims)));
     parallel_for(0, points_.size(), [&](std::size_t i) {
         Point& p = points_[i];
-        if (p.set_direct.empty() && p.receiver.fixed() && !p.background)
-            p.aimed = bright_.aim(p.position, p.receiver.normal_at(0));
+        if (aims(p)) p.aimed = bright_.aim(p.position, p.receiver.normal_at(0), most);
     });
     if (aims_bytes() - before <= max_bytes) return;
     // Aiming only saves rays: where its lists do not fit, the points do without.
