@@ -615,6 +615,27 @@ TEST(MonteCarloError, PhotonNoiseTheSetSharesGetsTheLargerMargin) {
     EXPECT_NEAR(together, 2 * sigma, 1e-12);
 }
 
+// Fifty points with the same gather noise in all: their set's RMS error averages fifty draws,
+// and the margin is 1.5. One point with all of it (a point beside a lamp): the set's error is
+// one draw, and the margin is the square root of χ²₁'s upper 1 % quantile (6.63), 2.57.
+TEST(MonteCarloError, NoiseHeldByOnePointGetsTheMarginOfOneDraw) {
+    constexpr int kPoints = 50;
+    std::vector<GatheredPoint> even(kPoints), one(kPoints);
+    for (int i = 0; i < kPoints; ++i) {
+        for (auto* set : {&even, &one}) {
+            GatheredPoint& p = (*set)[static_cast<std::size_t>(i)];
+            p.illuminance = 100;
+            p.sets = 8;
+        }
+        even[static_cast<std::size_t>(i)].gather_variance = 1;
+    }
+    one[0].gather_variance = kPoints;
+    const std::vector<std::size_t> sizes{kPoints};
+    const double sigma = std::sqrt(1.0) / 100;  // √(Σ var / n) over the mean, in both sets
+    EXPECT_NEAR(worst_error(set_errors(even, sizes)).parts.gather_noise, 1.5 * sigma, 1e-12);
+    EXPECT_NEAR(worst_error(set_errors(one, sizes)).parts.gather_noise, 2.57 * sigma, 0.01 * sigma);
+}
+
 // The coarser level's difference counts in the estimate either way, but calls for a finer mesh
 // only when it stands out of its noise: 50 points whose squared differences exceed their
 // variance by 1 lx², a sum of 50 lx², with a variance of 2 lx² each (noise alone spreads that sum

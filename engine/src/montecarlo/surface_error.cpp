@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "montecarlo/chi_square_margin.h"
 #include "montecarlo/sample_variance.h"
 #include "solution/result_difference.h"
 #include "solution/surface_summary.h"
@@ -14,21 +15,15 @@ namespace {
 // The realised error is one draw of the surfaces' noise: its square is a sum of χ² terms,
 // one per surface (a surface's irradiance and radiosity are one draw of its photons), and a
 // handful of walls, or one dark wall that dominates, leaves few degrees of freedom. The margin
-// is the square root of the χ² quantile at this normal deviate (99 %) over the degrees of
-// freedom, from the terms' effective number (Wilson–Hilferty): 2.6 for one term —
-constexpr double kQuantileDeviate = 2.326;
-// — but never less than this: sixteen batches' spread is itself uncertain, and a solve stops at
+// is chi_square_margin of the terms' effective number (2.6 for one term), but never less than
+// this: sixteen batches' spread is itself uncertain, and a solve stops at
 // the first round whose estimate meets its target, so rounds that drew a low spread end it. With
 // the quantile alone (1.4–1.8 for the meeting room's and the open plan's 10 and 19 surfaces)
 // both were under their error at tolerance 0.003 (0.94–0.97 times it; one of six seeds of the
 // meeting room at 0.96, the others 1.04–1.8).
 constexpr double kMinMargin = 2;
 
-double margin(double degrees) {
-    const double k = std::max(degrees, 1.0);
-    const double c = 1 - 2 / (9 * k) + kQuantileDeviate * std::sqrt(2 / (9 * k));
-    return std::max(kMinMargin, std::sqrt(c * c * c));
-}
+double margin(double degrees) { return std::max(kMinMargin, chi_square_margin(degrees)); }
 
 // Photometric light each surface's front emits per m² in `component` (−1: every one), lm/m².
 std::vector<double> emitted_per_area(const PreparedScene& scene, int component) {
