@@ -50,8 +50,8 @@ public:
         for (const PreparedLuminaire& l : scene.luminaires) found.push_back({l.position, 0});
         for (const CompactLight& l : compact_emitters(scene, reach_ / 4)) found.push_back(l);
         // Merged by cells a quarter of the reach wide: each cell's lights as one ball.
-        std::unordered_map<std::size_t, std::vector<CompactLight>> merged;
-        for (const CompactLight& l : found) merged[key(cell_of(l.centre, reach_ / 4))].push_back(l);
+        std::map<std::array<double, 3>, std::vector<CompactLight>> merged;
+        for (const CompactLight& l : found) merged[cell_of(l.centre, reach_ / 4)].push_back(l);
         for (const auto& [cell, members] : merged) {
             Vec3 centre{0, 0, 0};
             for (const CompactLight& l : members) centre = centre + l.centre;
@@ -93,10 +93,12 @@ public:
                 if (within(l)) out.push_back(l);
             return out;
         }
-        for (double x = a[0]; x <= b[0]; ++x) {
-            for (double y = a[1]; y <= b[1]; ++y) {
-                for (double z = a[2]; z <= b[2]; ++z) {
-                    const auto list = cells_.find(key({x, y, z}));
+        // Counted by offsets: far from the origin a cell's coordinate plus one may round to itself.
+        const auto count = [&](int axis) { return static_cast<int>(b[axis] - a[axis]) + 1; };
+        for (int x = 0; x < count(0); ++x) {
+            for (int y = 0; y < count(1); ++y) {
+                for (int z = 0; z < count(2); ++z) {
+                    const auto list = cells_.find(key({a[0] + x, a[1] + y, a[2] + z}));
                     if (list == cells_.end()) continue;
                     for (const CompactLight& l : list->second)
                         if (within(l)) out.push_back(l);
