@@ -1,5 +1,5 @@
 // The Monte Carlo path's elements: every piece of the prepared scene cut into triangles no
-// longer than a target edge (shorter near luminaires, see ElementSizing): a narrow piece (a
+// longer than a target edge (shorter near lamps, see ElementSizing): a narrow piece (a
 // board's edge, a rack's beam) as a strip of cells along it, two triangles each, any other by
 // bisecting longest edges. Rays find an element by its triangle index, so looking up what a ray
 // lands on costs nothing beyond the ray itself.
@@ -39,11 +39,10 @@ struct ElementSide {
 
 /// How long an element's edges may be: `max_edge_m`, and nearer than `light_reach_m` to a
 /// compact light (a luminaire, or an emitting surface at most half the reach across) that times
-/// its distance over the reach, down to kFinest of it. A lamp's light, and
-/// what its shade and the table under it reflect, varies over its distance from it, not over
-/// the room's free path: a lounge's points beside table lamps read their shades' element
-/// averages 0.7 % bright at the free path's elements, which no estimate of a few such points
-/// tells from noise.
+/// its distance over the reach, down to kFinest of it. A lamp's light, and what its shade and
+/// the table under it reflect, varies over its distance from it, not over the room's free path:
+/// a lounge's points beside table lamps read their shades' element averages 0.7 % bright at the
+/// free path's elements, which no estimate of a few such points tells from noise.
 struct ElementSizing {
     static constexpr double kFinest = 1.0 / 8;
     double max_edge_m = 0;
