@@ -16,11 +16,11 @@ namespace {
 // one per surface (a surface's irradiance and radiosity are one draw of its photons), and a
 // handful of walls, or one dark wall that dominates, leaves few degrees of freedom. The margin
 // is chi_square_margin of the terms' effective number (2.6 for one term), but never less than
-// this: sixteen batches' spread is itself uncertain, and a solve stops at
-// the first round whose estimate meets its target, so rounds that drew a low spread end it. With
-// the quantile alone (1.4–1.8 for the meeting room's and the open plan's 10 and 19 surfaces)
-// both were under their error at tolerance 0.003 (0.94–0.97 times it; one of six seeds of the
-// meeting room at 0.96, the others 1.04–1.8).
+// this: sixteen batches' spread is itself uncertain, and a solve stops at the first round whose
+// estimate meets its target, so rounds that drew a low spread end it. With the quantile alone
+// (1.4–1.8 for the meeting room's and the open plan's 10 and 19 surfaces) both were under their
+// error at tolerance 0.003 (0.94–0.97 times it; one of six seeds of the meeting room at 0.96, the
+// others 1.04–1.8).
 constexpr double kMinMargin = 2;
 
 double margin(double degrees) { return std::max(kMinMargin, chi_square_margin(degrees)); }
