@@ -117,6 +117,32 @@ TEST(ElementMesh, ElementsNearALuminaireShrinkWithTheDistance) {
     EXPECT_EQ(counted.sides, mesh.sides().size());
 }
 
+// Forty lamps, more than a triangle weighs before its list is narrowed to those within reach
+// of it as it is cut: every element still keeps to its nearest lamp's distance.
+TEST(ElementMesh, ManyLuminairesNarrowedAsPiecesAreCutStillSizeEveryElement) {
+    Scene scene = panel_room_with_sensors();
+    for (int i = 0; i < 40; ++i) {
+        scene.luminaires.push_back(testing::luminaire(
+            "lamp " + std::to_string(i), {0.3 + 0.45 * (i % 8), 0.4 + 0.8 * (i / 8), 2.7}, 100));
+    }
+    const PreparedScene prepared = prepare_scene(scene);
+    const ElementSizing sizing{0.4, 1.2};
+    const ElementMesh mesh(prepared, sizing);
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+        const Triangle& t = mesh[i].triangle;
+        const Vec3 centre = (t.a + t.b + t.c) / 3.0;
+        double apart = sizing.light_reach_m;
+        for (const PreparedLuminaire& l : prepared.luminaires)
+            apart = std::min(apart, length(centre - l.position));
+        const double longest = std::max({length(t.b - t.a), length(t.c - t.b), length(t.a - t.c)});
+        EXPECT_LE(longest, sizing.max_edge_m *
+                               std::max(apart / sizing.light_reach_m, ElementSizing::kFinest) *
+                               (1 + 1e-12))
+            << "element " << i;
+    }
+    EXPECT_EQ(ElementMesh::count(prepared, sizing).elements, mesh.size());
+}
+
 // A rack's beam (24.3 m by 12 cm) and a long thin triangle are cut into a strip of cells whose
 // two triangles are each other's coarser half, four elements per edge length along them (cells
 // half an edge long), not the 1 458 that bisecting the beam's triangles made; count() says what
