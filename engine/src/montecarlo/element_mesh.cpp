@@ -10,6 +10,7 @@
 #include "geometry/polygon_split.h"
 #include "parallel/fork_join.h"
 #include "parallel/per_thread.h"
+#include "radiant/box.h"
 
 namespace radiant {
 namespace {
@@ -70,22 +71,15 @@ public:
     std::vector<CompactLight> near(const std::vector<Vec3>& v) const {
         std::vector<CompactLight> out;
         if (lights_.empty()) return out;
-        Vec3 lo = v[0], hi = v[0];
-        for (const Vec3& p : v) {
-            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-        }
+        const Box bounds = bounding_box(v);
         // A light's ball may reach a cell beside its centre's.
         const double margin = reach_ * 1.5;
         const Vec3 r{margin, margin, margin};
-        const std::array<double, 3> a = cell_of(lo - r, reach_), b = cell_of(hi + r, reach_);
+        const std::array<double, 3> a = cell_of(bounds.lo - r, reach_);
+        const std::array<double, 3> b = cell_of(bounds.hi + r, reach_);
         const double cells = (b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1);
         const auto within = [&](const CompactLight& l) {
-            const Vec3& p = l.centre;
-            const Vec3 d{std::max({lo.x - p.x, 0.0, p.x - hi.x}),
-                         std::max({lo.y - p.y, 0.0, p.y - hi.y}),
-                         std::max({lo.z - p.z, 0.0, p.z - hi.z})};
-            return length(d) - l.radius <= reach_;
+            return distance(bounds, bounding_box({&l.centre, 1})) - l.radius <= reach_;
         };
         // A piece wider than the lights are many (a floor slab) scans them all.
         if (cells > static_cast<double>(lights_.size())) {
@@ -149,24 +143,15 @@ private:
     }
     // Each emitting surface whose bounding ball's radius is at most `widest`, as that ball.
     static std::vector<CompactLight> compact_emitters(const PreparedScene& scene, double widest) {
-        const std::size_t surfaces = scene.surface_names.size();
-        std::vector<Vec3> lo(surfaces), hi(surfaces);
-        std::vector<bool> emits(surfaces, false), seen(surfaces, false);
+        std::vector<Box> emitting(scene.surface_names.size());  // empty: the surface emits nothing
         for (const Piece& piece : scene.pieces) {
-            const auto s = static_cast<std::size_t>(piece.surface);
-            if (!scene.materials[static_cast<std::size_t>(piece.material)].emits()) continue;
-            emits[s] = true;
-            for (const Vec3& p : piece.vertices) {
-                if (!seen[s]) lo[s] = hi[s] = p;
-                seen[s] = true;
-                lo[s] = {std::min(lo[s].x, p.x), std::min(lo[s].y, p.y), std::min(lo[s].z, p.z)};
-                hi[s] = {std::max(hi[s].x, p.x), std::max(hi[s].y, p.y), std::max(hi[s].z, p.z)};
-            }
+            if (scene.materials[static_cast<std::size_t>(piece.material)].emits())
+                emitting[static_cast<std::size_t>(piece.surface)].add(piece.vertices);
         }
         std::vector<CompactLight> out;
-        for (std::size_t s = 0; s < surfaces; ++s) {
-            const double radius = 0.5 * length(hi[s] - lo[s]);
-            if (emits[s] && radius <= widest) out.push_back({0.5 * (lo[s] + hi[s]), radius});
+        for (const Box& box : emitting) {
+            const double radius = 0.5 * length(box.size());
+            if (!box.empty() && radius <= widest) out.push_back({box.centre(), radius});
         }
         return out;
     }
@@ -341,8 +326,10 @@ void split_piece(const Piece& piece, int index, const EdgeLimit& limit, Elements
 
 }  // namespace
 
-ElementCount ElementMesh::count(const PreparedScene& scene, const ElementSizing& sizing) {
-    const EdgeLimit limit(scene, sizing);
+namespace {
+
+// What cutting every piece of `scene` within `limit` makes, without holding it.
+ElementCount count_elements(const PreparedScene& scene, const EdgeLimit& limit) {
     ElementCount out;
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
         Elements elements{nullptr, 0};
@@ -355,12 +342,18 @@ ElementCount ElementMesh::count(const PreparedScene& scene, const ElementSizing&
     return out;
 }
 
+}  // namespace
+
+ElementCount ElementMesh::count(const PreparedScene& scene, const ElementSizing& sizing) {
+    return count_elements(scene, EdgeLimit(scene, sizing));
+}
+
 ElementMesh::ElementMesh(const PreparedScene& scene, const ElementSizing& sizing) {
+    const EdgeLimit limit(scene, sizing);
     // Counted first, so the lists hold exactly their elements (the memory budget's estimate).
-    const ElementCount counted = count(scene, sizing);
+    const ElementCount counted = count_elements(scene, limit);
     elements_.reserve(counted.elements);
     sides_.reserve(counted.sides);
-    const EdgeLimit limit(scene, sizing);
     Elements elements{&elements_, 0};
     for (std::size_t i = 0; i < scene.pieces.size(); ++i)
         split_piece(scene.pieces[i], static_cast<int>(i), limit, elements);
