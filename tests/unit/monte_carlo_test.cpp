@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <variant>
 
 #include "formfactor/point_polygon.h"
@@ -115,6 +117,58 @@ TEST(ElementMesh, ElementsNearALuminaireShrinkWithTheDistance) {
     const ElementCount counted = ElementMesh::count(prepared, sizing);
     EXPECT_EQ(counted.elements, mesh.size());
     EXPECT_EQ(counted.sides, mesh.sides().size());
+}
+
+// Elements of the scene's ceiling (its surfaces named ceiling-…) and of the others.
+std::pair<std::size_t, std::size_t> ceiling_and_rest(const PreparedScene& prepared,
+                                                     const ElementMesh& mesh) {
+    std::size_t ceiling = 0;
+    for (const MeshElement& e : mesh.elements())
+        ceiling +=
+            prepared.surface_names.at(static_cast<std::size_t>(e.surface)).rfind("ceiling", 0) == 0
+                ? 1
+                : 0;
+    return {ceiling, mesh.size() - ceiling};
+}
+
+// A light 2 cm under the ceiling that sends nothing upward (a lambertian downlight, an IES table
+// dark above the horizontal, a small emitting disc facing down) leaves the ceiling round it cut
+// as far from any light; the walls beside it are cut finer. A bulb shining all round cuts both.
+TEST(ElementMesh, LightsDarkAboveLeaveTheCeilingBehindThemUncut) {
+    const ElementSizing sizing{0.4, 1.2};
+    const Vec3 spot{0.5, 0.5, 2.98};
+    const auto mesh_with = [&](const std::function<void(Scene&)>& add) {
+        Scene scene = panel_room_with_sensors();
+        add(scene);
+        const PreparedScene prepared = prepare_scene(scene);
+        return ceiling_and_rest(prepared, ElementMesh(prepared, sizing));
+    };
+    const auto [bare_ceiling, bare_rest] = mesh_with([](Scene&) {});
+    const auto downlight = [&](Distribution d, std::optional<PhotometricTable> table) {
+        return mesh_with([&](Scene& scene) {
+            scene.luminaires.push_back(testing::luminaire("downlight", spot, 800, d));
+            scene.luminaires.back().photometry = std::move(table);
+        });
+    };
+    const std::vector<std::pair<std::size_t, std::size_t>> dark_above = {
+        downlight(Distribution::lambertian, std::nullopt),
+        downlight(Distribution::photometric,
+                  PhotometricTable{{0, 45, 90}, {0}, {1000, 500, 0}, {}}),
+        mesh_with([&](Scene& scene) {
+            scene.materials.push_back(testing::gray("disc", 0.5, 20000));
+            scene.surfaces.push_back(testing::polygon_surface(
+                "disc", "disc", testing::ceiling_rect(0.45, 0.55, 0.45, 0.55, spot.z)));
+        })};
+    for (const auto& [ceiling, rest] : dark_above) {
+        EXPECT_EQ(ceiling, bare_ceiling);
+        EXPECT_GT(rest, bare_rest + 10);
+    }
+    // A table with light up to 135° reaches the ceiling: cut like a bulb's.
+    const auto wide = downlight(Distribution::photometric,
+                                PhotometricTable{{0, 90, 135, 180}, {0}, {1000, 500, 100, 0}, {}});
+    const auto bulb = downlight(Distribution::isotropic, std::nullopt);
+    EXPECT_GT(wide.first, bare_ceiling + 10);
+    EXPECT_GT(bulb.first, bare_ceiling + 10);
 }
 
 // Forty lamps, more than a triangle weighs before its list is narrowed to those within reach

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <unordered_map>
 
@@ -32,11 +33,37 @@ bool halve(const Triangle& t, double h, Triangle& first, Triangle& second) {
 }
 
 // A compact light source: a luminaire, or an emitting surface at most half the reach across (a
-// lamp's bulb, a downlight's disc), as a ball.
+// lamp's bulb, a downlight's disc), as a ball. One that shines only to one side of a plane (a
+// downlight's table dark above the horizontal, a flat emitter) lights nothing behind it: the
+// ceiling round a downlight is lit only by what the room reflects, and is not cut finer.
 struct CompactLight {
     Vec3 centre;
     double radius = 0;
+    Vec3 front{0, 0, 0};  ///< unit; zero: it shines all round
+    double plane = 0;     ///< it lights only points x with dot(x, front) > plane
 };
+
+// The light of `l` reaches some point of the convex hull of `corners`.
+bool lights_any(const CompactLight& l, const Vec3* corners, std::size_t n, double eps) {
+    if (l.front == Vec3{0, 0, 0}) return true;
+    for (std::size_t k = 0; k < n; ++k)
+        if (dot(corners[k], l.front) > l.plane + eps) return true;
+    return false;
+}
+
+// A luminaire as a light: photometric tables without light past the horizontal, and lambertian
+// ones, shine only in front of the plane through it across its aim.
+CompactLight luminaire_light(const PreparedLuminaire& l) {
+    CompactLight out{l.position, 0};
+    const bool one_sided = l.distribution == Distribution::lambertian ||
+                           (l.distribution == Distribution::photometric &&
+                            l.table->widest_lit_gamma_rad() <= std::numbers::pi / 2);
+    if (one_sided) {
+        out.front = l.aim;
+        out.plane = dot(l.position, l.aim);
+    }
+    return out;
+}
 
 // The longest edge each triangle may keep (ElementSizing). Lights within a quarter of the reach
 // of each other count as one (so that a swarm of tiny emitters costs no more than a lamp); those
@@ -48,7 +75,7 @@ public:
         : h_(std::max(sizing.max_edge_m, 1e-9)), reach_(std::max(sizing.light_reach_m, 0.0)) {
         if (!(reach_ > 0)) return;
         std::vector<CompactLight> found;
-        for (const PreparedLuminaire& l : scene.luminaires) found.push_back({l.position, 0});
+        for (const PreparedLuminaire& l : scene.luminaires) found.push_back(luminaire_light(l));
         for (const CompactLight& l : compact_emitters(scene, reach_ / 4)) found.push_back(l);
         // Merged by cells a quarter of the reach wide: each cell's lights as one ball.
         std::map<std::array<double, 3>, std::vector<CompactLight>> merged;
@@ -57,10 +84,15 @@ public:
             Vec3 centre{0, 0, 0};
             for (const CompactLight& l : members) centre = centre + l.centre;
             centre = centre / static_cast<double>(members.size());
-            double radius = 0;
-            for (const CompactLight& l : members)
-                radius = std::max(radius, length(l.centre - centre) + l.radius);
-            lights_.push_back({centre, radius});
+            CompactLight cell_light{centre, 0, members.front().front, members.front().plane};
+            for (const CompactLight& l : members) {
+                cell_light.radius =
+                    std::max(cell_light.radius, length(l.centre - centre) + l.radius);
+                // Facing one way, they light the union of their half-spaces.
+                if (!(dot(l.front, cell_light.front) > 1 - 1e-9)) cell_light.front = {0, 0, 0};
+                cell_light.plane = std::min(cell_light.plane, l.plane);
+            }
+            lights_.push_back(cell_light);
             cells_[key(cell_of(centre, reach_))].push_back(lights_.back());
         }
     }
@@ -79,7 +111,8 @@ public:
         const std::array<double, 3> b = cell_of(bounds.hi + r, reach_);
         const double cells = (b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1);
         const auto within = [&](const CompactLight& l) {
-            return distance(bounds, bounding_box({&l.centre, 1})) - l.radius <= reach_;
+            return distance(bounds, bounding_box({&l.centre, 1})) - l.radius <= reach_ &&
+                   lights_any(l, v.data(), v.size(), eps_);
         };
         // A piece wider than the lights are many (a floor slab) scans them all.
         if (cells > static_cast<double>(lights_.size())) {
@@ -106,9 +139,12 @@ public:
     double of(const Triangle& t, const std::vector<CompactLight>& lights) const {
         if (lights.empty()) return h_;
         const Ball b = ball(t);
+        const std::array<Vec3, 3> corners{t.a, t.b, t.c};
         double nearest = reach_;
-        for (const CompactLight& l : lights)
-            nearest = std::min(nearest, length(l.centre - b.centre) - b.radius - l.radius);
+        for (const CompactLight& l : lights) {
+            if (lights_any(l, corners.data(), corners.size(), eps_))
+                nearest = std::min(nearest, length(l.centre - b.centre) - b.radius - l.radius);
+        }
         return h_ * std::clamp(nearest / reach_, ElementSizing::kFinest, 1.0);
     }
 
@@ -122,9 +158,12 @@ public:
     std::vector<CompactLight> near(const Triangle& t,
                                    const std::vector<CompactLight>& lights) const {
         const Ball b = ball(t);
+        const std::array<Vec3, 3> corners{t.a, t.b, t.c};
         std::vector<CompactLight> out;
         for (const CompactLight& l : lights) {
-            if (length(l.centre - b.centre) - 3 * b.radius - l.radius <= reach_) out.push_back(l);
+            if (length(l.centre - b.centre) - 3 * b.radius - l.radius <= reach_ &&
+                lights_any(l, corners.data(), corners.size(), eps_))
+                out.push_back(l);
         }
         return out;
     }
@@ -141,17 +180,39 @@ private:
                 std::sqrt(std::max({length_squared(t.a - centre), length_squared(t.b - centre),
                                     length_squared(t.c - centre)}))};
     }
-    // Each emitting surface whose bounding ball's radius is at most `widest`, as that ball.
+    // Each emitting surface whose bounding ball's radius is at most `widest`, as that ball; a
+    // flat one (every piece in one plane, facing one way) shines only from its front.
     static std::vector<CompactLight> compact_emitters(const PreparedScene& scene, double widest) {
-        std::vector<Box> emitting(scene.surface_names.size());  // empty: the surface emits nothing
+        struct Emitter {
+            Box box;  // empty: the surface emits nothing
+            Vec3 front{0, 0, 0};
+            double lowest = 0, highest = 0;  // its pieces' extent along `front`
+            bool flat = true;
+        };
+        std::vector<Emitter> emitting(scene.surface_names.size());
         for (const Piece& piece : scene.pieces) {
-            if (scene.materials[static_cast<std::size_t>(piece.material)].emits())
-                emitting[static_cast<std::size_t>(piece.surface)].add(piece.vertices);
+            if (!scene.materials[static_cast<std::size_t>(piece.material)].emits()) continue;
+            Emitter& e = emitting[static_cast<std::size_t>(piece.surface)];
+            if (e.box.empty()) {
+                e.front = piece.normal;
+                e.lowest = e.highest = dot(piece.vertices.front(), piece.normal);
+            }
+            e.box.add(piece.vertices);
+            e.flat = e.flat && dot(piece.normal, e.front) > 1 - 1e-9;
+            for (const Vec3& v : piece.vertices) {
+                e.lowest = std::min(e.lowest, dot(v, e.front));
+                e.highest = std::max(e.highest, dot(v, e.front));
+            }
         }
         std::vector<CompactLight> out;
-        for (const Box& box : emitting) {
-            const double radius = 0.5 * length(box.size());
-            if (!box.empty() && radius <= widest) out.push_back({box.centre(), radius});
+        for (const Emitter& e : emitting) {
+            const double radius = 0.5 * length(e.box.size());
+            if (e.box.empty() || radius > widest) continue;
+            CompactLight& l = out.emplace_back(CompactLight{e.box.centre(), radius});
+            if (e.flat && e.highest - e.lowest <= 1e-9 * (1 + radius)) {
+                l.front = e.front;
+                l.plane = e.lowest;
+            }
         }
         return out;
     }
@@ -166,6 +227,7 @@ private:
     }
 
     double h_, reach_;
+    double eps_ = 1e-7 * reach_;  // what counts as on a light's plane
     std::vector<CompactLight> lights_;
     std::unordered_map<std::size_t, std::vector<CompactLight>> cells_;
 };

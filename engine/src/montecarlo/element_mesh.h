@@ -42,7 +42,9 @@ struct ElementSide {
 /// its distance over the reach, down to kFinest of it. A lamp's light, and what its shade and
 /// the table under it reflect, varies over its distance from it, not over the room's free path:
 /// a lounge's points beside table lamps read their shades' element averages 0.7 % bright at the
-/// free path's elements, which no estimate of a few such points tells from noise.
+/// free path's elements, which no estimate of a few such points tells from noise. What lies
+/// wholly behind a light that shines to one side only (a downlight dark above the horizontal, a
+/// flat emitter) keeps `max_edge_m`.
 struct ElementSizing {
     static constexpr double kFinest = 1.0 / 8;
     double max_edge_m = 0;

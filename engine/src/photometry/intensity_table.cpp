@@ -213,6 +213,14 @@ double IntensityTable::candela(double gamma_rad, double c_rad) const {
 
 double IntensityTable::peak_candela() const { return *std::max_element(cd_.begin(), cd_.end()); }
 
+double IntensityTable::widest_lit_gamma_rad() const {
+    const std::size_t m = gamma_.size();
+    std::size_t last = 0;
+    for (std::size_t k = 0; k < cd_.size(); ++k)
+        if (cd_[k] > 0) last = std::max(last, k % m);
+    return gamma_[std::min(last + 1, m - 1)] * kDegree;
+}
+
 double IntensityTable::integrate() const {
     constexpr double kGammaStep = 2.5 * kDegree, kCStep = 5 * kDegree;
     const std::size_t m = gamma_.size();

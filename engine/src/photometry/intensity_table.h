@@ -29,6 +29,10 @@ public:
     /// interpolation (monotone between samples) never exceeds.
     double peak_candela() const;
 
+    /// The widest γ (radians from nadir) with light in any C-plane: past the last row of the
+    /// table with an intensity above 0 the curve is 0 from the next row on.
+    double widest_lit_gamma_rad() const;
+
 private:
     double row(std::size_t g, double c_deg) const;
     /// The curve across γ (degrees) through the rows `row_at(u, opposite)` of one C direction
