@@ -119,6 +119,44 @@ TEST(ElementMesh, ElementsNearALuminaireShrinkWithTheDistance) {
     EXPECT_EQ(counted.sides, mesh.sides().size());
 }
 
+// A strip light (1.2 m by 3 cm, facing down 1 m over the floor) is no compact light, but the
+// light under it varies across it over its distance from it as a lamp's does: elements in front
+// of it are cut by their distance from its length, as near its ends as near its middle. The same strip
+// emitting nothing leaves the mesh as without it.
+TEST(ElementMesh, ElementsNearAStripLightShrinkWithTheirDistanceFromIt) {
+    const ElementSizing sizing{0.4, 1.2};
+    const Vec3 a{0.5, 0.5, 1}, b{1.7, 0.5, 1};
+    const auto mesh_with = [&](double exitance) {
+        Scene scene = panel_room_with_sensors();
+        scene.materials.push_back(testing::gray("strip", 0.5, exitance));
+        scene.surfaces.push_back(testing::polygon_surface(
+            "strip", "strip", testing::ceiling_rect(a.x, b.x, a.y, a.y + 0.03, a.z)));
+        const PreparedScene prepared = prepare_scene(scene);
+        return std::make_pair(ElementMesh(prepared, sizing), prepared.world_origin);
+    };
+    const auto [dark, dark_origin] = mesh_with(0);
+    const auto [lit, origin] = mesh_with(50000);
+    EXPECT_GT(lit.size(), dark.size() + 50);
+    std::size_t near_an_end = 0;
+    for (const MeshElement& e : lit.elements()) {
+        const Triangle& t = e.triangle;
+        const Vec3 centre = (t.a + t.b + t.c) / 3.0 + origin;
+        const double along = std::clamp(dot(centre - a, b - a) / length_squared(b - a), 0.0, 1.0);
+        const double apart = length(centre - (a + (b - a) * along));
+        const double longest = std::max({length(t.b - t.a), length(t.c - t.b), length(t.a - t.c)});
+        if (centre.z >= a.z) continue;  // behind the strip: it lights nothing there
+        EXPECT_LE(longest,
+                  sizing.max_edge_m *
+                      std::clamp(apart / sizing.light_reach_m, ElementSizing::kFinest, 1.0) *
+                      (1 + 1e-12));
+        // Under the strip's first 10 cm, over 0.5 m from its middle, on the floor.
+        if (centre.z < 0.01 && centre.x > a.x && centre.x < a.x + 0.1 &&
+            std::abs(centre.y - a.y) < 0.1)
+            near_an_end += longest < 0.9 * sizing.max_edge_m ? 1 : 0;
+    }
+    EXPECT_GT(near_an_end, 0u);
+}
+
 // Elements of the scene's ceiling (its surfaces named ceiling-…) and of the others.
 std::pair<std::size_t, std::size_t> ceiling_and_rest(const PreparedScene& prepared,
                                                      const ElementMesh& mesh) {

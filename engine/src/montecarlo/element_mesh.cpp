@@ -33,7 +33,8 @@ bool halve(const Triangle& t, double h, Triangle& first, Triangle& second) {
 }
 
 // A compact light source: a luminaire, or an emitting surface at most half the reach across (a
-// lamp's bulb, a downlight's disc), as a ball. One that shines only to one side of a plane (a
+// lamp's bulb, a downlight's disc), as a ball; a thin one (a strip light) is a chain of them
+// (compact_emitters). One that shines only to one side of a plane (a
 // downlight's table dark above the horizontal, a flat emitter) lights nothing behind it: the
 // ceiling round a downlight is lit only by what the room reflects, and is not cut finer.
 struct CompactLight {
@@ -180,11 +181,14 @@ private:
                 std::sqrt(std::max({length_squared(t.a - centre), length_squared(t.b - centre),
                                     length_squared(t.c - centre)}))};
     }
-    // Each emitting surface whose bounding ball's radius is at most `widest`, as that ball; a
-    // flat one (every piece in one plane, facing one way) shines only from its front.
+    // Each emitting surface whose bounding ball's radius is at most `widest`, as that ball; one
+    // longer but at most `widest` thick about its length (a strip light under a cabinet), as a
+    // chain of balls along it. A flat one (every piece in one plane, facing one way) shines only
+    // from its front.
     static std::vector<CompactLight> compact_emitters(const PreparedScene& scene, double widest) {
         struct Emitter {
             Box box;  // empty: the surface emits nothing
+            std::vector<const Piece*> pieces;
             Vec3 front{0, 0, 0};
             double lowest = 0, highest = 0;  // its pieces' extent along `front`
             bool flat = true;
@@ -198,6 +202,7 @@ private:
                 e.lowest = e.highest = dot(piece.vertices.front(), piece.normal);
             }
             e.box.add(piece.vertices);
+            e.pieces.push_back(&piece);
             e.flat = e.flat && dot(piece.normal, e.front) > 1 - 1e-9;
             for (const Vec3& v : piece.vertices) {
                 e.lowest = std::min(e.lowest, dot(v, e.front));
@@ -206,15 +211,52 @@ private:
         }
         std::vector<CompactLight> out;
         for (const Emitter& e : emitting) {
+            if (e.box.empty()) continue;
+            const std::size_t first = out.size();
             const double radius = 0.5 * length(e.box.size());
-            if (e.box.empty() || radius > widest) continue;
-            CompactLight& l = out.emplace_back(CompactLight{e.box.centre(), radius});
-            if (e.flat && e.highest - e.lowest <= 1e-9 * (1 + radius)) {
-                l.front = e.front;
-                l.plane = e.lowest;
+            if (radius <= widest) {
+                out.push_back({e.box.centre(), radius});
+            } else {
+                chain_of_balls(e.pieces, e.box.centre(), widest, out);
+            }
+            if (!e.flat || e.highest - e.lowest > 1e-9 * (1 + radius)) continue;
+            for (std::size_t k = first; k < out.size(); ++k) {
+                out[k].front = e.front;
+                out[k].plane = e.lowest;
             }
         }
         return out;
+    }
+    // The pieces' vertices as balls along the segment between the two farthest apart (roughly:
+    // the one farthest from `centre`, and the one farthest from it), at most `widest` apart and
+    // `widest` plus half that apart in radius, where every vertex lies within `widest` of the
+    // segment; else nothing.
+    static void chain_of_balls(const std::vector<const Piece*>& pieces, const Vec3& centre,
+                               double widest, std::vector<CompactLight>& out) {
+        const auto farthest_from = [&](const Vec3& x) {
+            Vec3 best = x;
+            for (const Piece* p : pieces)
+                for (const Vec3& v : p->vertices)
+                    if (length_squared(v - x) > length_squared(best - x)) best = v;
+            return best;
+        };
+        const Vec3 a = farthest_from(centre);
+        const Vec3 b = farthest_from(a);
+        const double span = length(b - a);
+        if (!(span > 0)) return;
+        const Vec3 along = (b - a) / span;
+        double thickness = 0;
+        for (const Piece* p : pieces) {
+            for (const Vec3& v : p->vertices) {
+                const double t = std::clamp(dot(v - a, along), 0.0, span);
+                thickness = std::max(thickness, length(v - (a + along * t)));
+            }
+        }
+        if (thickness > widest) return;
+        const double balls = std::ceil(span / widest);
+        const double step = span / balls;
+        for (double k = 0; k < balls; ++k)
+            out.push_back({a + along * ((k + 0.5) * step), thickness + step / 2});
     }
     static std::array<double, 3> cell_of(const Vec3& p, double size) {
         return {std::floor(p.x / size), std::floor(p.y / size), std::floor(p.z / size)};

@@ -38,8 +38,9 @@ struct ElementSide {
 };
 
 /// How long an element's edges may be: `max_edge_m`, and nearer than `light_reach_m` to a
-/// compact light (a luminaire, or an emitting surface at most half the reach across) that times
-/// its distance over the reach, down to kFinest of it. A lamp's light, and what its shade and
+/// compact light (a luminaire, or an emitting surface at most half the reach across, or at most
+/// half that thick about its length: a strip light) that times its distance over the reach, down
+/// to kFinest of it. A lamp's light, and what its shade and
 /// the table under it reflect, varies over its distance from it, not over the room's free path:
 /// a lounge's points beside table lamps read their shades' element averages 0.7 % bright at the
 /// free path's elements, which no estimate of a few such points tells from noise. What lies
