@@ -34,9 +34,9 @@ bool halve(const Triangle& t, double h, Triangle& first, Triangle& second) {
 
 // A compact light source: a luminaire, or an emitting surface at most half the reach across (a
 // lamp's bulb, a downlight's disc), as a ball; a thin one (a strip light) is a chain of them
-// (compact_emitters). One that shines only to one side of a plane (a
-// downlight's table dark above the horizontal, a flat emitter) lights nothing behind it: the
-// ceiling round a downlight is lit only by what the room reflects, and is not cut finer.
+// (compact_emitters). One that shines only to one side of a plane (a downlight's table dark
+// above the horizontal, a flat emitter) lights nothing behind it: the ceiling round a downlight
+// is lit only by what the room reflects, and is not cut finer.
 struct CompactLight {
     Vec3 centre;
     double radius = 0;
@@ -227,10 +227,10 @@ private:
         }
         return out;
     }
-    // The pieces' vertices as balls along the segment between the two farthest apart (roughly:
-    // the one farthest from `centre`, and the one farthest from it), at most `widest` apart and
-    // `widest` plus half that apart in radius, where every vertex lies within `widest` of the
-    // segment; else nothing.
+    // Where every vertex of the pieces lies within `widest` of the segment between the two
+    // farthest apart (roughly: the one farthest from `centre`, and the one farthest from that),
+    // balls along that segment at most `widest` apart, each reaching as far from it as the
+    // farthest vertex and half the spacing beyond; else nothing.
     static void chain_of_balls(const std::vector<const Piece*>& pieces, const Vec3& centre,
                                double widest, std::vector<CompactLight>& out) {
         const auto farthest_from = [&](const Vec3& x) {

@@ -38,14 +38,14 @@ struct ElementSide {
 };
 
 /// How long an element's edges may be: `max_edge_m`, and nearer than `light_reach_m` to a
-/// compact light (a luminaire, or an emitting surface at most half the reach across, or at most
-/// half that thick about its length: a strip light) that times its distance over the reach, down
-/// to kFinest of it. A lamp's light, and what its shade and
-/// the table under it reflect, varies over its distance from it, not over the room's free path:
-/// a lounge's points beside table lamps read their shades' element averages 0.7 % bright at the
-/// free path's elements, which no estimate of a few such points tells from noise. What lies
-/// wholly behind a light that shines to one side only (a downlight dark above the horizontal, a
-/// flat emitter) keeps `max_edge_m`.
+/// compact light (a luminaire; an emitting surface at most half the reach across, or within a
+/// quarter of it of a segment along it: a strip light) that times its distance over the reach,
+/// down to kFinest of it. A lamp's light, and what its shade and the table under it reflect,
+/// varies over its distance from it, not over the room's free path: a lounge's points beside
+/// table lamps read their shades' element averages 0.7 % bright at the free path's elements,
+/// which no estimate of a few such points tells from noise. What lies wholly behind a light that
+/// shines to one side only (a downlight dark above the horizontal, a flat emitter) keeps
+/// `max_edge_m`.
 struct ElementSizing {
     static constexpr double kFinest = 1.0 / 8;
     double max_edge_m = 0;
