@@ -119,23 +119,27 @@ TEST(ElementMesh, ElementsNearALuminaireShrinkWithTheDistance) {
     EXPECT_EQ(counted.sides, mesh.sides().size());
 }
 
+// The panel room with a strip 3 cm wide from `a` along x to `x1`, facing down, emitting
+// `exitance`; its elements, and the offset of their frame from the scene's.
+std::pair<ElementMesh, Vec3> mesh_with_strip(const Vec3& a, double x1, double exitance,
+                                             const ElementSizing& sizing) {
+    Scene scene = panel_room_with_sensors();
+    scene.materials.push_back(testing::gray("strip", 0.5, exitance));
+    scene.surfaces.push_back(testing::polygon_surface(
+        "strip", "strip", testing::ceiling_rect(a.x, x1, a.y, a.y + 0.03, a.z)));
+    const PreparedScene prepared = prepare_scene(scene);
+    return {ElementMesh(prepared, sizing), prepared.world_origin};
+}
+
 // A strip light (1.2 m by 3 cm, facing down 1 m over the floor) is no compact light, but the
 // light under it varies across it over its distance from it as a lamp's does: elements in front
-// of it are cut by their distance from its length, as near its ends as near its middle. The same strip
-// emitting nothing leaves the mesh as without it.
+// of it are cut by their distance from its length, as near its ends as near its middle. The same
+// strip emitting nothing leaves the mesh as without it.
 TEST(ElementMesh, ElementsNearAStripLightShrinkWithTheirDistanceFromIt) {
     const ElementSizing sizing{0.4, 1.2};
     const Vec3 a{0.5, 0.5, 1}, b{1.7, 0.5, 1};
-    const auto mesh_with = [&](double exitance) {
-        Scene scene = panel_room_with_sensors();
-        scene.materials.push_back(testing::gray("strip", 0.5, exitance));
-        scene.surfaces.push_back(testing::polygon_surface(
-            "strip", "strip", testing::ceiling_rect(a.x, b.x, a.y, a.y + 0.03, a.z)));
-        const PreparedScene prepared = prepare_scene(scene);
-        return std::make_pair(ElementMesh(prepared, sizing), prepared.world_origin);
-    };
-    const auto [dark, dark_origin] = mesh_with(0);
-    const auto [lit, origin] = mesh_with(50000);
+    const auto [dark, dark_origin] = mesh_with_strip(a, b.x, 0, sizing);
+    const auto [lit, origin] = mesh_with_strip(a, b.x, 50000, sizing);
     EXPECT_GT(lit.size(), dark.size() + 50);
     std::size_t near_an_end = 0;
     for (const MeshElement& e : lit.elements()) {
@@ -155,6 +159,19 @@ TEST(ElementMesh, ElementsNearAStripLightShrinkWithTheirDistanceFromIt) {
             near_an_end += longest < 0.9 * sizing.max_edge_m ? 1 : 0;
     }
     EXPECT_GT(near_an_end, 0u);
+}
+
+// A strip 20 km long through the room would be a chain of 66 667 lights at this reach, more than
+// the chains may hold in all (a hostile scene's strips would make billions): it grades nothing.
+TEST(ElementMesh, AStripTooLongForTheChainsGradesNothing) {
+    const ElementSizing sizing{0.4, 1.2};
+    const Vec3 a{-10000, 0.5, 1};
+    EXPECT_EQ(mesh_with_strip(a, 10000, 50000, sizing).first.size(),
+              mesh_with_strip(a, 10000, 0, sizing).first.size());
+    // A tenth as long, through the room as well, it does.
+    const Vec3 a_tenth{-1000, 0.5, 1};
+    EXPECT_GT(mesh_with_strip(a_tenth, 1000, 50000, sizing).first.size(),
+              mesh_with_strip(a_tenth, 1000, 0, sizing).first.size());
 }
 
 // Elements of the scene's ceiling (its surfaces named ceiling-…) and of the others.

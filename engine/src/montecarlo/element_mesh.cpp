@@ -210,6 +210,7 @@ private:
             }
         }
         std::vector<CompactLight> out;
+        std::size_t chained = 0;  // balls in chains so far
         for (const Emitter& e : emitting) {
             if (e.box.empty()) continue;
             const std::size_t first = out.size();
@@ -217,7 +218,7 @@ private:
             if (radius <= widest) {
                 out.push_back({e.box.centre(), radius});
             } else {
-                chain_of_balls(e.pieces, e.box.centre(), widest, out);
+                chain_of_balls(e.pieces, e.box.centre(), widest, chained, out);
             }
             if (!e.flat || e.highest - e.lowest > 1e-9 * (1 + radius)) continue;
             for (std::size_t k = first; k < out.size(); ++k) {
@@ -230,9 +231,13 @@ private:
     // Where every vertex of the pieces lies within `widest` of the segment between the two
     // farthest apart (roughly: the one farthest from `centre`, and the one farthest from that),
     // balls along that segment at most `widest` apart, each reaching as far from it as the
-    // farthest vertex and half the spacing beyond; else nothing.
+    // farthest vertex and half the spacing beyond; else nothing. Nothing either where the
+    // chains would hold more than kMostChainedBalls in all (`chained` so far): a strip
+    // kilometres long beside rooms metres wide would make millions, a hostile scene billions.
+    static constexpr std::size_t kMostChainedBalls = std::size_t{1} << 16;
     static void chain_of_balls(const std::vector<const Piece*>& pieces, const Vec3& centre,
-                               double widest, std::vector<CompactLight>& out) {
+                               double widest, std::size_t& chained,
+                               std::vector<CompactLight>& out) {
         const auto farthest_from = [&](const Vec3& x) {
             Vec3 best = x;
             for (const Piece* p : pieces)
@@ -252,8 +257,10 @@ private:
                 thickness = std::max(thickness, length(v - (a + along * t)));
             }
         }
-        if (thickness > widest) return;
         const double balls = std::ceil(span / widest);
+        if (thickness > widest || !(balls <= static_cast<double>(kMostChainedBalls - chained)))
+            return;
+        chained += static_cast<std::size_t>(balls);
         const double step = span / balls;
         for (double k = 0; k < balls; ++k)
             out.push_back({a + along * ((k + 0.5) * step), thickness + step / 2});
