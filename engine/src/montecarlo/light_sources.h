@@ -4,10 +4,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
 #include "geometry/random.h"
+#include "montecarlo/far_piece_draw.h"
 #include "montecarlo/light_tree.h"
 #include "montecarlo/sensor_receiver.h"
 #include "scene/prepared_scene.h"
@@ -105,6 +107,8 @@ private:
     struct SurfaceRun {
         std::size_t first = 0, end = 0;
         double power = 0;
+        /// For a run of many pieces (a bulb modelled as a sphere): its draw for far points.
+        std::shared_ptr<const FarPieceDraw> far;
     };
     /// One piece of an emitting surface's run of pieces, drawn by its rough light at x, its
     /// light over its probability.
