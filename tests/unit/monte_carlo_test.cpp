@@ -252,6 +252,19 @@ TEST(ElementMesh, ManyLuminairesNarrowedAsPiecesAreCutStillSizeEveryElement) {
     EXPECT_EQ(ElementMesh::count(prepared, sizing).elements, mesh.size());
 }
 
+// A stop (a time limit, a cancel) cuts meshing short, with no elements: a million triangles take
+// seconds to cut, which a short time limit was overrun by.
+TEST(ElementMesh, AStopCutsMeshingShortWithNoElements) {
+    const PreparedScene prepared = prepare_scene(panel_room_with_sensors());
+    const ElementSizing sizing{0.1};
+    const ElementMesh whole(prepared, sizing, [] { return false; });
+    EXPECT_GT(whole.size(), 1000u);
+    EXPECT_EQ(whole.size(), ElementMesh(prepared, sizing).size());
+    const ElementMesh stopped(prepared, sizing, [] { return true; });
+    EXPECT_EQ(stopped.size(), 0u);
+    EXPECT_TRUE(stopped.sides().empty());
+}
+
 // A rack's beam (24.3 m by 12 cm) and a long thin triangle are cut into a strip of cells whose
 // two triangles are each other's coarser half, four elements per edge length along them (cells
 // half an edge long), not the 1 458 that bisecting the beam's triangles made; count() says what

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -439,10 +440,18 @@ void split_piece(const Piece& piece, int index, const EdgeLimit& limit, Elements
 
 namespace {
 
-// What cutting every piece of `scene` within `limit` makes, without holding it.
-ElementCount count_elements(const PreparedScene& scene, const EdgeLimit& limit) {
-    ElementCount out;
+// How often cutting looks at `stop`: a million triangles take seconds to cut.
+constexpr std::size_t kPiecesBetweenStops = 4096;
+bool stops_at(std::size_t piece, const std::function<bool()>& stop) {
+    return stop && piece % kPiecesBetweenStops == 0 && stop();
+}
+
+// What cutting every piece of `scene` within `limit` makes, without holding it; false once
+// `stop` says so.
+bool count_elements(const PreparedScene& scene, const EdgeLimit& limit,
+                    const std::function<bool()>& stop, ElementCount& out) {
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
+        if (stops_at(i, stop)) return false;
         Elements elements{nullptr, 0};
         const Piece& piece = scene.pieces[i];
         split_piece(piece, static_cast<int>(i), limit, elements);
@@ -450,24 +459,33 @@ ElementCount count_elements(const PreparedScene& scene, const EdgeLimit& limit) 
         const bool two_sided = scene.materials[static_cast<std::size_t>(piece.material)].two_sided;
         out.sides += elements.count * (two_sided ? 2 : 1);
     }
-    return out;
+    return true;
 }
 
 }  // namespace
 
 ElementCount ElementMesh::count(const PreparedScene& scene, const ElementSizing& sizing) {
-    return count_elements(scene, EdgeLimit(scene, sizing));
+    ElementCount out;
+    count_elements(scene, EdgeLimit(scene, sizing), {}, out);
+    return out;
 }
 
-ElementMesh::ElementMesh(const PreparedScene& scene, const ElementSizing& sizing) {
+ElementMesh::ElementMesh(const PreparedScene& scene, const ElementSizing& sizing,
+                         const std::function<bool()>& stop) {
     const EdgeLimit limit(scene, sizing);
     // Counted first, so the lists hold exactly their elements (the memory budget's estimate).
-    const ElementCount counted = count_elements(scene, limit);
+    ElementCount counted;
+    if (!count_elements(scene, limit, stop, counted)) return;
     elements_.reserve(counted.elements);
     sides_.reserve(counted.sides);
     Elements elements{&elements_, 0};
-    for (std::size_t i = 0; i < scene.pieces.size(); ++i)
+    for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
+        if (stops_at(i, stop)) {
+            elements_.clear();
+            return;
+        }
         split_piece(scene.pieces[i], static_cast<int>(i), limit, elements);
+    }
     for (std::size_t i = 0; i < elements_.size(); ++i) {
         MeshElement& e = elements_[i];
         e.front = static_cast<int>(sides_.size());

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "scene/prepared_scene.h"
@@ -61,8 +62,10 @@ class ElementMesh {
 public:
     /// What ElementMesh(scene, sizing) would hold, without holding it.
     static ElementCount count(const PreparedScene& scene, const ElementSizing& sizing);
-    /// Cuts every piece of `scene` to edges as `sizing` asks. Linear in the output.
-    ElementMesh(const PreparedScene& scene, const ElementSizing& sizing);
+    /// Cuts every piece of `scene` to edges as `sizing` asks. Linear in the output. Once `stop`
+    /// says so (a time limit, a cancel) it holds no elements.
+    ElementMesh(const PreparedScene& scene, const ElementSizing& sizing,
+                const std::function<bool()>& stop = {});
 
     std::size_t size() const { return elements_.size(); }
     const MeshElement& operator[](std::size_t i) const { return elements_[i]; }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 
 #include "design/glare.h"
@@ -148,8 +149,8 @@ void next_budgets(ComponentLight& light, double target, double per_photon, doubl
 // nearer than `near_m` to a surface in front count no area (see measure_open_areas).
 struct MonteCarloLevel {
     MonteCarloLevel(const PreparedScene& scene, const ElementSizing& sizing, double near_m,
-                    std::uint64_t seed, std::uint64_t& rays)
-        : mesh(scene, sizing), visibility(make_embree_visibility(mesh.triangles())) {
+                    std::uint64_t seed, const std::function<bool()>& stop, std::uint64_t& rays)
+        : mesh(scene, sizing, stop), visibility(make_embree_visibility(mesh.triangles())) {
         mesh.measure_open_areas(*visibility, near_m, rays);
         const std::vector<LightComponent>& components = scene.components.components;
         if (components.size() <= 1) {
@@ -504,9 +505,11 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         aims_hold.resize(0);
         measured = false;
         std::uint64_t meshing_rays = 0;
+        // Cut short by the time limit or a cancel, a level holds no elements: its rounds then
+        // gather nothing, and the answer is unmeasured.
         level = std::make_unique<MonteCarloLevel>(scene, sized(edge),
                                                   kNearOfFreePath * input.mean_free_path_m,
-                                                  options_.seed, meshing_rays);
+                                                  options_.seed, stop, meshing_rays);
         meshing.rays += meshing_rays;
         rays_ += meshing_rays;
         elements_ = level->mesh.size();
