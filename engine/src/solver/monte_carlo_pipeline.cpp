@@ -646,6 +646,15 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 });
             if (biased) {
                 refine = refinements < kMaxRefinements;
+                if (refine && !in_time(level_start)) {
+                    refine = false;
+                    char reason[128];
+                    std::snprintf(reason, sizeof reason,
+                                  "the finer mesh it needs would not be sampled within the time "
+                                  "limit of %g s",
+                                  *options_.max_seconds);
+                    result.stop_reason = reason;
+                }
                 if (refine) {
                     // The finer level replaces this one, with the ray sets this one has.
                     const ElementCount finer =
@@ -658,14 +667,6 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                         stop_for_memory(
                             memory_->refusal("monte-carlo's finer elements", finer_bytes));
                         refine = false;
-                    } else if (!in_time(level_start)) {
-                        refine = false;
-                        char reason[128];
-                        std::snprintf(reason, sizeof reason,
-                                      "the finer mesh it needs would not be sampled within the "
-                                      "time limit of %g s",
-                                      *options_.max_seconds);
-                        result.stop_reason = reason;
                     } else {
                         level_hold.resize(bytes_of(finer));
                     }
