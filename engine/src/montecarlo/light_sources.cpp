@@ -436,10 +436,14 @@ Rgb LightSources::surface_part(const SurfaceRun& run, const Vec3& x, const Vec3&
     if (size == 1) return part(first, x, n, visibility, rng, rays);
     const double power = run.power;
     if (!(power > 0)) return {0, 0, 0};
+    // Piece k's light, drawn with probability p.
+    const auto drawn = [&](std::size_t k, double p) {
+        return p > 0 ? scaled(part(first + k, x, n, visibility, rng, rays), 1 / p) : Rgb{0, 0, 0};
+    };
     if (run.far && run.far->far(x)) {
         double p = 0;
         const std::size_t k = run.far->draw(x, rng.next(), p);
-        return p > 0 ? scaled(part(first + k, x, n, visibility, rng, rays), 1 / p) : Rgb{0, 0, 0};
+        return drawn(k, p);
     }
     // Each piece's rough light once (a run has at most kMaxSurfaceDrawPieces).
     std::array<double, kMaxSurfaceDrawPieces> lights;
@@ -461,8 +465,7 @@ Rgb LightSources::surface_part(const SurfaceRun& run, const Vec3& x, const Vec3&
         if (r < p) break;
         r -= p;
     }
-    const double p = probability(k);
-    return p > 0 ? scaled(part(first + k, x, n, visibility, rng, rays), 1 / p) : Rgb{0, 0, 0};
+    return drawn(k, probability(k));
 }
 
 LightSources::SensorSources LightSources::sensor_sources(const Vec3& x,
