@@ -259,7 +259,8 @@ struct Writer {
                         cal_written = true;
                     }
                     const std::string data = id + ".dat";
-                    if (!write_intensity_data(l, dir / data)) {
+                    const int dimensions = write_intensity_data(l, dir / data);
+                    if (!dimensions) {
                         error = "cannot write " + (dir / data).string();
                         return false;
                     }
@@ -268,8 +269,10 @@ struct Writer {
                     for (int k = 0; k < 3; ++k) {
                         radiance[k] = l.flux_lm[k] / l.table->flux_lm() / projected;
                     }
-                    rad << "void brightdata " << id << "_table\n5 noop ./" << data
-                        << " ./radiant_lum.cal radiant_gamma radiant_c\n0\n9 " << triple(l.aim)
+                    rad << "void brightdata " << id << "_table\n"
+                        << 3 + dimensions << " noop ./" << data
+                        << " ./radiant_lum.cal radiant_gamma"
+                        << (dimensions == 2 ? " radiant_c" : "") << "\n0\n9 " << triple(l.aim)
                         << ' ' << triple(l.c0_axis) << ' ' << triple(l.c90_axis) << '\n'
                         << id << "_table light " << id << "_light\n0\n0\n3 " << triple(radiance)
                         << '\n'
@@ -285,22 +288,34 @@ struct Writer {
         return true;
     }
 
-    // A RADIANCE data file over γ ∈ [0°, 180°] and C ∈ [0°, 360°] (C varying fastest), from the
-    // engine's own interpolation of the table so both programs see the same intensities.
-    bool write_intensity_data(const PreparedLuminaire& l, const fs::path& path) const {
+    // A RADIANCE data file of the engine's own interpolation of the table, so both programs see
+    // the same intensities: over γ ∈ [0°, 180°] and C ∈ [0°, 360°] (C varying fastest), or over γ
+    // alone for a table alike in every C-plane. RADIANCE interpolates it linearly, which reads a
+    // curve high where it bends: a narrow spot (cos⁴⁰ γ) sampled every degree read up to 1 % high
+    // in its flank, so γ is sampled 4 times finer than C, and 20 times where it is all there is.
+    // Returns the file's dimensions, 0 when it cannot be written.
+    int write_intensity_data(const PreparedLuminaire& l, const fs::path& path) const {
         const double step = options.photometric_step_deg;
-        const int ng = static_cast<int>(std::lround(180 / step)) + 1;
-        const int nc = static_cast<int>(std::lround(360 / step)) + 1;
+        const auto samples = [](double span, double every) {
+            return static_cast<int>(std::lround(span / every)) + 1;
+        };
+        const auto angle = [](int k, int n, double span) { return span * kPi / 180 * k / (n - 1); };
         std::ofstream out(path);
+        if (l.table->alike_all_round()) {
+            const int ng = samples(180, step / 20);
+            out << "1\n0 180 " << ng << '\n';
+            for (int g = 0; g < ng; ++g) out << num(l.table->candela(angle(g, ng, 180), 0)) << '\n';
+            return out ? 1 : 0;
+        }
+        const int ng = samples(180, step / 4), nc = samples(360, step);
         out << "2\n0 180 " << ng << "\n0 360 " << nc << '\n';
         for (int g = 0; g < ng; ++g) {
-            const double gamma = kPi * g / (ng - 1);
             for (int c = 0; c < nc; ++c) {
-                out << num(l.table->candela(gamma, 2 * kPi * c / (nc - 1)))
+                out << num(l.table->candela(angle(g, ng, 180), angle(c, nc, 360)))
                     << (c + 1 == nc ? '\n' : ' ');
             }
         }
-        return static_cast<bool>(out);
+        return out ? 2 : 0;
     }
 
     bool write_points(const fs::path& path) {

@@ -162,6 +162,14 @@ IntensityTable::IntensityTable(const PhotometricTable& t) : gamma_(t.gamma_deg) 
     flux_lm_ = integrate();
 }
 
+bool IntensityTable::alike_all_round() const {
+    const std::size_t m = gamma_.size();
+    for (std::size_t k = m; k < cd_.size(); ++k) {
+        if (cd_[k] != cd_[k % m]) return false;
+    }
+    return true;
+}
+
 double IntensityTable::row(std::size_t g, double c_deg) const {
     const std::size_t n = c_.size(), m = gamma_.size();
     if (n == 1) return cd_[g];

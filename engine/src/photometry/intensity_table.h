@@ -33,6 +33,9 @@ public:
     /// table with an intensity above 0 the curve is 0 from the next row on.
     double widest_lit_gamma_rad() const;
 
+    /// Whether every C-plane holds the same curve: a luminaire alike all round its axis.
+    bool alike_all_round() const;
+
 private:
     double row(std::size_t g, double c_deg) const;
     /// The curve across γ (degrees) through the rows `row_at(u, opposite)` of one C direction
