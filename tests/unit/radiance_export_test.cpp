@@ -248,7 +248,7 @@ TEST(RadianceExport, ASymmetricSpotIsAFineCurveOverGamma) {
     EXPECT_EQ(data[1], (std::vector<double>{0, 180, 3601}));
     EXPECT_NEAR(data[2 + 200][0], spot(10, 0), 1e-6);  // a table angle: the table's value
     // Between two samples RADIANCE's straight line is within 0.01 % of the engine's curve in the
-    // flank, where a 1° step read 0.7 % high at 20°.
+    // flank, where a 1° step read 0.5 % high at 20.5°.
     const Scene s = parsed(scene);
     const IntensityTable table =
         std::get<IntensityTable>(read_intensity_table(*s.luminaires[2].photometry));
