@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "montecarlo/cdf_draw.h"
+
 namespace radiant {
 namespace {
 
@@ -80,17 +82,9 @@ std::size_t FarPieceDraw::draw(const Vec3& x, double r, double& probability) con
     // Without light toward x (every piece faces away) the draw goes by power alone.
     const double by_light = light > 0 ? (1 - share_) / light : 0.0;
     const double by_power = power > 0 ? (light > 0 ? share_ : 1.0) / power : 0.0;
-    std::size_t k = 0;
-    if (light > 0 && r < 1 - share_) {
-        const double at = r / (1 - share_) * light;
-        k = static_cast<std::size_t>(
-            std::upper_bound(first, first + static_cast<std::ptrdiff_t>(n), at) - first);
-    } else {
-        const double u = light > 0 ? (r - (1 - share_)) / share_ : r;
-        k = static_cast<std::size_t>(
-            std::upper_bound(power_cdf_.begin(), power_cdf_.end(), u * power) - power_cdf_.begin());
-    }
-    k = std::min(k, n - 1);
+    const std::size_t k = light > 0 && r < 1 - share_
+                              ? draw_index({first, n}, r / (1 - share_))
+                              : draw_index(power_cdf_, light > 0 ? (r - (1 - share_)) / share_ : r);
     probability = by_light * weight(d, k) + by_power * powers_[k];
     return k;
 }

@@ -9,6 +9,7 @@
 #include "formfactor/point_polygon.h"
 #include "geometry/cosine_direction.h"
 #include "geometry/triangle_point.h"
+#include "montecarlo/cdf_draw.h"
 
 namespace radiant {
 namespace {
@@ -87,12 +88,6 @@ Vec3 kernel_point(const Vec3& x, const Vec3& n, const std::array<Vec3, 3>& t, co
         if (rng.next() * bound * r2 * r2 <= std::max(0.0, dot(n, y - x))) break;
     }
     return y;
-}
-
-std::size_t draw(const std::vector<double>& cdf, double r) {
-    const double target = r * cdf.back();
-    const auto it = std::upper_bound(cdf.begin(), cdf.end(), target);
-    return std::min(static_cast<std::size_t>(it - cdf.begin()), cdf.size() - 1);
 }
 
 Rgb scaled(const Rgb& c, double s) { return {c[0] * s, c[1] * s, c[2] * s}; }
@@ -225,7 +220,7 @@ LightSources::LightSources(const PreparedScene& scene, double ray_epsilon, int c
 
 Vec3 LightSources::point_on(const EmittingPiece& e, double r1, double r2, double r3) const {
     const Piece& p = scene_.pieces[static_cast<std::size_t>(e.piece)];
-    const std::size_t k = draw(e.fan_cdf, r1) + 1;
+    const std::size_t k = draw_index(e.fan_cdf, r1) + 1;
     const double s = std::sqrt(r2);
     return p.vertices[0] * (1 - s) + p.vertices[k] * (s * (1 - r3)) + p.vertices[k + 1] * (s * r3);
 }
@@ -245,7 +240,7 @@ Vec3 LightSources::luminaire_direction(std::size_t i, SampleStream& rng, double&
             break;
     }
     const std::vector<double>& cdf = tables_[i].cdf;
-    const std::size_t cell = draw(cdf, rng.next());
+    const std::size_t cell = draw_index(cdf, rng.next());
     const int g = static_cast<int>(cell) / kCCells, k = static_cast<int>(cell) % kCCells;
     const double cos0 = std::cos(kPi * g / kGammaCells),
                  cos1 = std::cos(kPi * (g + 1) / kGammaCells);
@@ -262,7 +257,7 @@ Vec3 LightSources::luminaire_direction(std::size_t i, SampleStream& rng, double&
 Photon LightSources::emit(SampleStream& rng) const {
     Photon photon;
     if (empty()) return photon;
-    const std::size_t s = draw(source_cdf_, rng.next());
+    const std::size_t s = draw_index(source_cdf_, rng.next());
     const double share = source_power_[s] / total_power_;
     if (s < scene_.luminaires.size()) {
         const PreparedLuminaire& l = scene_.luminaires[s];
@@ -417,7 +412,7 @@ Rgb LightSources::direct_at(const Vec3& x, const Vec3& n, const Visibility& visi
                 continue;
             }
         } else {
-            s = draw(source_cdf_, r / kPowerShare);
+            s = draw_index(source_cdf_, r / kPowerShare);
             by_tree = tree_.probability(s, x, n, leaf);
         }
         const double p = ((1 - kPowerShare) * by_tree +
