@@ -471,13 +471,15 @@ ElementCount ElementMesh::count(const PreparedScene& scene, const ElementSizing&
 }
 
 ElementMesh::ElementMesh(const PreparedScene& scene, const ElementSizing& sizing,
-                         const std::function<bool()>& stop) {
+                         const std::function<bool()>& stop, std::optional<ElementCount> counted) {
     const EdgeLimit limit(scene, sizing);
     // Counted first, so the lists hold exactly their elements (the memory budget's estimate).
-    ElementCount counted;
-    if (!count_elements(scene, limit, stop, counted)) return;
-    elements_.reserve(counted.elements);
-    sides_.reserve(counted.sides);
+    if (!counted) {
+        counted.emplace();
+        if (!count_elements(scene, limit, stop, *counted)) return;
+    }
+    elements_.reserve(counted->elements);
+    sides_.reserve(counted->sides);
     Elements elements{&elements_, 0};
     for (std::size_t i = 0; i < scene.pieces.size(); ++i) {
         if (stops_at(i, stop)) {

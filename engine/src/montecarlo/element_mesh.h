@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "scene/prepared_scene.h"
@@ -63,9 +64,11 @@ public:
     /// What ElementMesh(scene, sizing) would hold, without holding it.
     static ElementCount count(const PreparedScene& scene, const ElementSizing& sizing);
     /// Cuts every piece of `scene` to edges as `sizing` asks. Linear in the output. Once `stop`
-    /// says so (a time limit, a cancel) it holds no elements.
+    /// says so (a time limit, a cancel) it holds no elements. `counted` is what count(scene,
+    /// sizing) said, where the caller has it; else the pieces are counted here first.
     ElementMesh(const PreparedScene& scene, const ElementSizing& sizing,
-                const std::function<bool()>& stop = {});
+                const std::function<bool()>& stop = {},
+                std::optional<ElementCount> counted = std::nullopt);
 
     std::size_t size() const { return elements_.size(); }
     const MeshElement& operator[](std::size_t i) const { return elements_[i]; }

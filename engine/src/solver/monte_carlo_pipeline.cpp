@@ -148,9 +148,10 @@ void next_budgets(ComponentLight& light, double target, double per_photon, doubl
 // measured before the photon fields that spread flux over them: hidden parts of an element
 // nearer than `near_m` to a surface in front count no area (see measure_open_areas).
 struct MonteCarloLevel {
-    MonteCarloLevel(const PreparedScene& scene, const ElementSizing& sizing, double near_m,
-                    std::uint64_t seed, const std::function<bool()>& stop, std::uint64_t& rays)
-        : mesh(scene, sizing, stop), visibility(make_embree_visibility(mesh.triangles())) {
+    MonteCarloLevel(const PreparedScene& scene, const ElementSizing& sizing,
+                    const ElementCount& counted, double near_m, std::uint64_t seed,
+                    const std::function<bool()>& stop, std::uint64_t& rays)
+        : mesh(scene, sizing, stop, counted), visibility(make_embree_visibility(mesh.triangles())) {
         mesh.measure_open_areas(*visibility, near_m, rays);
         const std::vector<LightComponent>& components = scene.components.components;
         if (components.size() <= 1) {
@@ -507,7 +508,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
         std::uint64_t meshing_rays = 0;
         // Cut short by the time limit or a cancel, a level holds no elements: its rounds then
         // gather nothing, and the answer is unmeasured.
-        level = std::make_unique<MonteCarloLevel>(scene, sized(edge),
+        level = std::make_unique<MonteCarloLevel>(scene, sized(edge), count,
                                                   kNearOfFreePath * input.mean_free_path_m,
                                                   options_.seed, stop, meshing_rays);
         meshing.rays += meshing_rays;
@@ -669,6 +670,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                         refine = false;
                     } else {
                         level_hold.resize(bytes_of(finer));
+                        count = finer;
                     }
                 }
                 stopped = !refine;
