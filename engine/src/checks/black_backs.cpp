@@ -51,9 +51,11 @@ std::size_t sensor_points_inside(const Scene& scene, const BoxGeometry& box) {
 }  // namespace
 
 void check_black_backs(const CheckedScene& input, const LightPaths& paths,
-                       const std::vector<bool>& misplaced, std::vector<Warning>& out) {
+                       const std::vector<bool>& misplaced,
+                       const std::vector<bool>& misplaced_emitters, std::vector<Warning>& out) {
     const Scene& scene = input.scene;
-    const std::vector<double> share = black_back_shares(paths, scene.surfaces.size(), misplaced);
+    const std::vector<double> share =
+        black_back_shares(paths, scene.surfaces.size(), misplaced, misplaced_emitters);
     const double lost = std::accumulate(share.begin(), share.end(), 0.0);
     const double named_share = lost >= kMuchLost ? kLostShareWhenMuchIsLost : kLostShare;
 

@@ -18,8 +18,10 @@ inline constexpr double kMuchLost = 0.10;
 /// box_faces_in for each box facing in that lies inside another room (a box facing in around
 /// it) or loses light on its outside; back_face_light for every other surface that loses a
 /// share of the light as above, the largest first.
-/// The light of luminaires marked in `misplaced` is left out: their warnings explain it.
+/// The light of luminaires marked in `misplaced` and of emitting surfaces (engine index) marked
+/// in `misplaced_emitters` is left out: their warnings explain it.
 void check_black_backs(const CheckedScene& input, const LightPaths& paths,
-                       const std::vector<bool>& misplaced, std::vector<Warning>& out);
+                       const std::vector<bool>& misplaced,
+                       const std::vector<bool>& misplaced_emitters, std::vector<Warning>& out);
 
 }  // namespace radiant

@@ -21,6 +21,11 @@ constexpr std::size_t kMaxProbes = std::size_t{1} << 18;
 // Key of the probes' sample streams.
 constexpr std::uint64_t kProbeStream = 0x67617073ull;
 
+// A surface whose bounds hold this share of the model's volume is its room.
+constexpr double kRoomShare = 0.5;
+
+double volume(const Vec3& size) { return size.x * size.y * size.z; }
+
 // An emitting surface's triangles of the ray tracer, with their cumulative area.
 struct EmitterTriangles {
     std::vector<std::size_t> triangles;
@@ -29,9 +34,10 @@ struct EmitterTriangles {
 
 }  // namespace
 
-void check_emitter_placement(const CheckedScene& input, std::vector<Warning>& out,
-                             std::uint64_t& rays) {
+std::vector<bool> check_emitter_placement(const CheckedScene& input, std::vector<Warning>& out,
+                                          std::uint64_t& rays) {
     const PreparedScene& scene = input.prepared;
+    std::vector<bool> behind(input.scene.surfaces.size(), false);
     std::map<int, EmitterTriangles> emitters;  // by engine surface, in order
     for (std::size_t i = 0; i < input.triangles.size(); ++i) {
         const Piece& p = scene.pieces[static_cast<std::size_t>(input.triangle_piece[i])];
@@ -44,16 +50,24 @@ void check_emitter_placement(const CheckedScene& input, std::vector<Warning>& ou
         e.triangles.push_back(i);
         e.cdf.push_back((e.cdf.empty() ? 0.0 : e.cdf.back()) + area);
     }
-    if (emitters.empty()) return;
+    if (emitters.empty()) return behind;
+    const double model_volume = volume(model_bounds(scene).size());
+    const auto holds_the_model = [&](int surface) {
+        Box bounds;
+        for (const Piece& p : scene.pieces) {
+            if (p.surface == surface) bounds.add(p.vertices);
+        }
+        return volume(bounds.size()) >= kRoomShare * model_volume;
+    };
     const std::size_t probes =
         std::clamp(kMaxProbes / emitters.size(), kMinProbesPerSurface, kProbesPerSurface);
     const double eps = input.visibility.epsilon();
     for (const auto& [surface, e] : emitters) {
         const auto s = static_cast<std::size_t>(surface);
         const double gap = kNearGapShare * std::sqrt(scene.surface_area_m2[s]);
-        std::size_t near = 0;
+        std::size_t near = 0, black = 0, escaped = 0;
         std::vector<double> depths;  // how far in front the near hits' surfaces lie
-        std::map<int, std::size_t> met;
+        std::map<int, std::size_t> met, black_met;
         for (std::size_t k = 0; k < probes; ++k) {
             SampleStream rng(input.seed, kProbeStream, s, k);
             const auto at = std::upper_bound(e.cdf.begin(), e.cdf.end(), rng.next() * e.cdf.back());
@@ -66,25 +80,52 @@ void check_emitter_placement(const CheckedScene& input, std::vector<Warning>& ou
             const Vec3 d = cosine_direction(n, rng.next(), rng.next());
             ++rays;
             const SideHit hit = side_hit(input, x + n * eps, d);
-            if (hit.escaped() || !(hit.t < gap)) continue;
+            if (hit.escaped()) {
+                ++escaped;
+                continue;
+            }
             // Its own other side (a furnace's thin slab, a room that glows) is what it encloses.
             const int other = scene.pieces[static_cast<std::size_t>(hit.piece)].surface;
             if (other == surface) continue;
+            if (hit.black) {
+                ++black;
+                ++black_met[other];
+            }
+            if (!(hit.t < gap)) continue;
             ++near;
             depths.push_back(hit.t * dot(d, n));
             ++met[other];
+        }
+        const auto most_met = [](const std::map<int, std::size_t>& counts) {
+            return std::max_element(
+                       counts.begin(), counts.end(),
+                       [](const auto& a, const auto& b) { return a.second < b.second; })
+                ->first;
+        };
+        const double black_share = static_cast<double>(black) / static_cast<double>(probes);
+        // A surface that holds most of the model is the room, wound or faced the wrong way:
+        // back_face_light says so.
+        if (escaped == 0 && black_share >= kBehindShare && !holds_the_model(most_met(black_met))) {
+            behind[s] = true;
+            out.push_back(
+                {"emitter_behind_surface",
+                 surface_label(input.scene, s) + " sends " + percent(black_share) +
+                     " of its light onto the black back of " +
+                     surface_label(input.scene, static_cast<std::size_t>(most_met(black_met))) +
+                     ", where it is lost: does it lie inside a closed object or behind that "
+                     "surface (move it out, an LED strip onto its shelf, not into it), or is "
+                     "that surface wound the wrong way?",
+                 surface_pointer(input.scene, s)});
+            continue;
         }
         const double share = static_cast<double>(near) / static_cast<double>(probes);
         if (share < kTrappedShare) continue;
         std::nth_element(depths.begin(), depths.begin() + static_cast<long>(depths.size() / 2),
                          depths.end());
-        const auto most =
-            std::max_element(met.begin(), met.end(),
-                             [](const auto& a, const auto& b) { return a.second < b.second; });
         out.push_back({"emitter_faces_surface",
                        surface_label(input.scene, s) + " emits toward " +
-                           surface_label(input.scene, static_cast<std::size_t>(most->first)) + " " +
-                           length_text(depths[depths.size() / 2]) +
+                           surface_label(input.scene, static_cast<std::size_t>(most_met(met))) +
+                           " " + length_text(depths[depths.size() / 2]) +
                            " in front of it: " + percent(share) +
                            " of its light meets a surface within " + length_text(gap) +
                            ", and little of it gets out; if it should face the other way, "
@@ -92,6 +133,7 @@ void check_emitter_placement(const CheckedScene& input, std::vector<Warning>& ou
                            "run counter-clockwise)",
                        surface_pointer(input.scene, s)});
     }
+    return behind;
 }
 
 }  // namespace radiant

@@ -19,10 +19,16 @@ namespace radiant {
 inline constexpr double kNearGapShare = 0.05;
 inline constexpr double kTrappedShare = 0.5;
 
-/// emitter_faces_surface for each emitting surface whose light mostly meets a surface as
-/// above, probed by up to 64 cosine-distributed rays from points of its front. Counts the
-/// rays cast into `rays`.
-void check_emitter_placement(const CheckedScene& input, std::vector<Warning>& out,
-                             std::uint64_t& rays);
+/// A surface is named when at least kBehindShare of its light first meets the black back of a
+/// one-sided surface that is not the room, and none leaves the model: it lies inside a closed
+/// object (a cove's LED strip sunk into its shelf) or behind a surface, where its light is lost.
+inline constexpr double kBehindShare = 0.5;
+
+/// emitter_behind_surface or emitter_faces_surface for each emitting surface whose light
+/// mostly meets a black back or a surface near it as above, probed by up to 64
+/// cosine-distributed rays from points of its front. Counts the rays cast into `rays`. Returns
+/// the engine surfaces named emitter_behind_surface: their lost light is explained.
+std::vector<bool> check_emitter_placement(const CheckedScene& input, std::vector<Warning>& out,
+                                          std::uint64_t& rays);
 
 }  // namespace radiant

@@ -35,6 +35,7 @@ struct PathStart {
     Vec3 origin, direction;
     double flux_lm = 0;
     int luminaire = -1;  ///< −1: an emitting surface
+    int emitter = -1;    ///< an emitting surface's engine surface; −1: a luminaire
     /// A luminaire's: what it would send along `direction` aimed the other way.
     double reversed_lm = 0;
 };
@@ -62,7 +63,8 @@ void luminaire_starts(const PreparedLuminaire& l, int index, std::size_t count,
         const Vec3 s = sphere_direction(k, count);
         const Vec3 u = f.t * s.x + f.b * s.y + f.n * s.z;
         const double intensity = std::max(0.0, intensity_per_lm(l, u));
-        out.push_back({l.position, u, intensity, index, std::max(0.0, intensity_per_lm(l, -u))});
+        out.push_back(
+            {l.position, u, intensity, index, -1, std::max(0.0, intensity_per_lm(l, -u))});
         total += intensity;
     }
     if (!(total > 0)) {
@@ -101,11 +103,12 @@ void emitter_starts(const CheckedScene& input, double power_lm, std::size_t coun
         const std::size_t i =
             triangles[std::min(static_cast<std::size_t>(at - cdf.begin()), cdf.size() - 1)];
         const Triangle& t = input.triangles[i];
-        const Vec3 n = scene.pieces[static_cast<std::size_t>(input.triangle_piece[i])].normal;
+        const Piece& piece = scene.pieces[static_cast<std::size_t>(input.triangle_piece[i])];
+        const Vec3 n = piece.normal;
         const double s = std::sqrt(rng.next()), r = rng.next();
         const Vec3 x = t.a * (1 - s) + t.b * (s * (1 - r)) + t.c * (s * r);
         out.push_back({x + n * eps, cosine_direction(n, rng.next(), rng.next()),
-                       power_lm / static_cast<double>(count)});
+                       power_lm / static_cast<double>(count), -1, piece.surface});
     }
 }
 
@@ -244,7 +247,8 @@ LightPaths trace_light_paths(const CheckedScene& input, std::uint64_t& rays) {
         const PathStart& s = starts[i];
         const PathEnd& e = ends[i];
         if (e.escaped) out.escaped_lm += s.flux_lm;
-        if (e.lost_surface >= 0) out.lost.push_back({e.lost_surface, s.luminaire, s.flux_lm});
+        if (e.lost_surface >= 0)
+            out.lost.push_back({e.lost_surface, s.luminaire, s.emitter, s.flux_lm});
         if (s.luminaire < 0) continue;
         const auto l = static_cast<std::size_t>(s.luminaire);
         Sums& sum = sums[l];
@@ -286,13 +290,16 @@ LightPaths trace_light_paths(const CheckedScene& input, std::uint64_t& rays) {
 }
 
 std::vector<double> black_back_shares(const LightPaths& paths, std::size_t surfaces,
-                                      const std::vector<bool>& excluded) {
+                                      const std::vector<bool>& excluded,
+                                      const std::vector<bool>& excluded_emitters) {
+    const auto marked = [](const std::vector<bool>& flags, int i) {
+        return i >= 0 && static_cast<std::size_t>(i) < flags.size() &&
+               flags[static_cast<std::size_t>(i)];
+    };
     std::vector<double> share(surfaces, 0.0);
     if (!(paths.emitted_lm > 0)) return share;
     for (const LostPath& p : paths.lost) {
-        const bool skip = p.luminaire >= 0 &&
-                          static_cast<std::size_t>(p.luminaire) < excluded.size() &&
-                          excluded[static_cast<std::size_t>(p.luminaire)];
+        const bool skip = marked(excluded, p.luminaire) || marked(excluded_emitters, p.emitter);
         if (!skip) share[static_cast<std::size_t>(p.surface)] += p.flux_lm / paths.emitted_lm;
     }
     return share;

@@ -43,6 +43,7 @@ double near_distance(const PreparedScene& prepared);
 struct LostPath {
     int surface = 0;
     int luminaire = -1;  ///< the luminaire it left; −1: an emitting surface
+    int emitter = -1;    ///< the emitting surface (engine index) it left; −1: a luminaire
     double flux_lm = 0;
 };
 
@@ -54,9 +55,11 @@ struct LightPaths {
 };
 
 /// Per engine surface, the share of the emitted light lost into its black back, leaving out
-/// the light of the luminaires marked in `excluded` (misplaced ones, already warned about).
+/// the light of the luminaires marked in `excluded` and of the emitting surfaces (engine
+/// index) marked in `excluded_emitters` (misplaced ones, already warned about).
 std::vector<double> black_back_shares(const LightPaths& paths, std::size_t surfaces,
-                                      const std::vector<bool>& excluded);
+                                      const std::vector<bool>& excluded,
+                                      const std::vector<bool>& excluded_emitters);
 
 /// Traces the paths (at least kLightPaths of them, more with many luminaires). Counts the rays
 /// cast into `rays`.

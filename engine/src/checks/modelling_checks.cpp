@@ -81,8 +81,8 @@ std::vector<Warning> modelling_warnings(const CheckedScene& input, std::uint64_t
     check_emission(input.scene, input.prepared, out);
     const LightPaths paths = trace_light_paths(input, rays);
     const std::vector<bool> misplaced = check_luminaire_placement(input, paths, out);
-    check_black_backs(input, paths, misplaced, out);
-    check_emitter_placement(input, out, rays);
+    const std::vector<bool> misplaced_emitters = check_emitter_placement(input, out, rays);
+    check_black_backs(input, paths, misplaced, misplaced_emitters, out);
     const std::vector<bool> misplaced_sensors = check_sensor_placement(input, out, rays);
     check_sensor_facing(input, misplaced_sensors, out, rays);
     return capped_per_code(std::move(out));
