@@ -259,6 +259,45 @@ TEST(RadianceExport, ASymmetricSpotIsAFineCurveOverGamma) {
     }
 }
 
+// A 2 m LED strip 5 cm wide is written as ten lengths of 20 cm (rtrace misjudges a long source
+// taken whole), which together are the strip; the panel, 2 by 2, stays one polygon.
+TEST(RadianceExport, ALongEmitterIsWrittenInLengthsOfFourWidths) {
+    nlohmann::json scene = small_scene();
+    scene["surfaces"].push_back(
+        {{"name", "strip"},
+         {"material", "panel"},
+         {"polygon", {{0, 50, 240}, {0, 55, 240}, {200, 55, 240}, {200, 50, 240}}}});
+    const fs::path dir = temp_dir("strip");
+    const auto outcome = write_radiance_scene(parsed(scene), dir);
+    ASSERT_TRUE(outcome.ok) << outcome.error;
+    EXPECT_EQ(outcome.summary.area_sources, 11u);
+    const std::string rad = test::read_text(dir / "scene.rad");
+    double area = 0;
+    int parts = 0;
+    for (std::size_t at = rad.find("m1_panel polygon s"); at != std::string::npos;
+         at = rad.find("m1_panel polygon s", at + 1)) {
+        std::istringstream in(rad.substr(rad.find("\n0\n0\n", at) + 5));
+        int count = 0;
+        in >> count;
+        std::vector<Vec3> v(static_cast<std::size_t>(count / 3));
+        for (Vec3& p : v) in >> p.x >> p.y >> p.z;
+        double length = 0;
+        for (const Vec3& a : v) {
+            for (const Vec3& b : v) length = std::max(length, std::sqrt(length_squared(b - a)));
+        }
+        double polygon_area = 0;
+        for (std::size_t k = 1; k + 1 < v.size(); ++k)
+            polygon_area += 0.5 * std::sqrt(length_squared(cross(v[k] - v[0], v[k + 1] - v[0])));
+        if (polygon_area < 1) {  // the strip's parts, not the panel's 4 m²
+            area += polygon_area;
+            ++parts;
+            EXPECT_LE(length, std::hypot(0.2, 0.05) + 1e-9);
+        }
+    }
+    EXPECT_EQ(parts, 10);
+    EXPECT_NEAR(area, 2 * 0.05, 1e-9);
+}
+
 TEST(RadianceExport, SurfaceSamplesCoverTheSurfaceArea) {
     const fs::path dir = temp_dir("samples");
     ExportOptions options;
