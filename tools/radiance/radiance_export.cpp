@@ -59,8 +59,10 @@ constexpr double kLayerOffsetM = 1e-5;
 // taken whole, which misjudges a long one seen from near it: a cove lobby lit by four LED strips
 // 11.4 m long and 5 cm wide, 0.55 m under its ceiling, read 16 % dark on its floor, and the same
 // strips cut into 0.25 m lengths agreed with Radiant within 1 %. An emitting piece longer than
-// this many times its width is written as equal lengths of at most that.
+// this many times its width is written as equal lengths of at most that, in at most
+// kMaxEmitterParts of them (a line of light 100 m long and 1 mm wide would be 25 000).
 constexpr double kMaxEmitterAspect = 4;
+constexpr double kMaxEmitterParts = 256;
 
 // A convex emitting piece cut across its length into parts at most kMaxEmitterAspect times as
 // long as it is wide (itself when it is no longer).
@@ -84,7 +86,8 @@ std::vector<std::vector<Vec3>> emitter_parts(const Piece& p) {
     const double length = end - start;
     const double width = length > 0 ? p.area_m2 / length : 0;
     if (!(width > 0) || length <= kMaxEmitterAspect * width) return {p.vertices};
-    const auto parts = static_cast<int>(std::ceil(length / (kMaxEmitterAspect * width)));
+    const auto parts = static_cast<int>(
+        std::min(std::ceil(length / (kMaxEmitterAspect * width)), kMaxEmitterParts));
     std::vector<std::vector<Vec3>> out;
     for (int k = 0; k < parts; ++k) {
         const Vec3 from = along * (start + length * k / parts);
