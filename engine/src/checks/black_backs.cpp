@@ -34,8 +34,6 @@ int room_around(const Scene& scene, const BoxGeometry& inner, std::size_t self) 
     return -1;
 }
 
-double volume(const Vec3& size) { return size.x * size.y * size.z; }
-
 std::size_t sensor_points_inside(const Scene& scene, const BoxGeometry& box) {
     std::size_t count = 0;
     for (const SensorSet& set : scene.sensors) {
@@ -61,13 +59,13 @@ void check_black_backs(const CheckedScene& input, const LightPaths& paths,
 
     // A box that is most of the model is its room, not an object wrongly facing in.
     const double meters = meters_per_unit(scene.units);
-    const double model_volume_m3 = volume(model_bounds(input.prepared).size());
+    const Box model = model_bounds(input.prepared);
     std::vector<std::size_t> others;
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         const double surface_share = share[s];
         const BoxGeometry* box = box_facing_in(scene.surfaces[s]);
         const int room = box ? room_around(scene, *box, s) : -1;
-        const bool object = box && volume((box->max - box->min) * meters) < 0.5 * model_volume_m3;
+        const bool object = box && !is_room_sized((box->max - box->min) * meters, model);
         if (box && (room >= 0 || (object && surface_share >= named_share))) {
             std::string message = "box " + quoted(scene.surfaces[s].name) + " faces in, as a room";
             if (room >= 0) {

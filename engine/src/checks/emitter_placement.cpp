@@ -21,11 +21,6 @@ constexpr std::size_t kMaxProbes = std::size_t{1} << 18;
 // Key of the probes' sample streams.
 constexpr std::uint64_t kProbeStream = 0x67617073ull;
 
-// A surface whose bounds hold this share of the model's volume is its room.
-constexpr double kRoomShare = 0.5;
-
-double volume(const Vec3& size) { return size.x * size.y * size.z; }
-
 // An emitting surface's triangles of the ray tracer, with their cumulative area.
 struct EmitterTriangles {
     std::vector<std::size_t> triangles;
@@ -51,13 +46,13 @@ std::vector<bool> check_emitter_placement(const CheckedScene& input, std::vector
         e.cdf.push_back((e.cdf.empty() ? 0.0 : e.cdf.back()) + area);
     }
     if (emitters.empty()) return behind;
-    const double model_volume = volume(model_bounds(scene).size());
+    const Box model = model_bounds(scene);
     const auto holds_the_model = [&](int surface) {
         Box bounds;
         for (const Piece& p : scene.pieces) {
             if (p.surface == surface) bounds.add(p.vertices);
         }
-        return volume(bounds.size()) >= kRoomShare * model_volume;
+        return is_room_sized(bounds.size(), model);
     };
     const std::size_t probes =
         std::clamp(kMaxProbes / emitters.size(), kMinProbesPerSurface, kProbesPerSurface);

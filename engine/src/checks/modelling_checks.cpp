@@ -51,6 +51,11 @@ Box model_bounds(const PreparedScene& prepared) {
     return box;
 }
 
+bool is_room_sized(const Vec3& size, const Box& model) {
+    const auto volume = [](const Vec3& v) { return v.x * v.y * v.z; };
+    return volume(size) >= 0.5 * volume(model.size());
+}
+
 double distance_outside(const Box& box, const Vec3& x) {
     double d = 0;
     for (int a = 0; a < 3; ++a) d = std::max({d, box.lo[a] - x[a], x[a] - box.hi[a]});

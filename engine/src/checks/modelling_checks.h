@@ -28,6 +28,10 @@ struct CheckedScene {
 /// The bounding box of every piece (local frame, metres).
 Box model_bounds(const PreparedScene& prepared);
 
+/// Whether a box of `size` (metres) holds half the volume of `model`: it is the model's room, not
+/// an object in it (a room box faced the wrong way, not a desk).
+bool is_room_sized(const Vec3& size, const Box& model);
+
 /// How far `x` lies outside `box` (metres; 0 inside or on it).
 double distance_outside(const Box& box, const Vec3& x);
 
