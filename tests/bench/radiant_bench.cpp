@@ -31,6 +31,7 @@
 #include "bench_table.h"
 #include "isolated_run.h"
 #include "office_scene.h"
+#include "path_reference.h"
 #include "radiance_peer.h"
 #include "radiant/proto/scene_json.h"
 #include "radiant/solve.h"
@@ -237,6 +238,8 @@ int main(int argc, char** argv) {
     std::vector<double> equal_error_targets{0.01, 0.0025};
     std::string radiance_reference;
     RadianceReferenceOptions reference_options;
+    std::string path_reference;
+    PathReferenceOptions path_options;
     app.add_option("--methods", methods, "solvers to run")->delimiter(',')->capture_default_str();
     app.add_option("--tolerance", tolerances, "tolerances to run (repeat or comma-separate)")
         ->delimiter(',')
@@ -307,6 +310,15 @@ int main(int argc, char** argv) {
     app.add_option("--radiance-reference-settings", reference_options.setting,
                    "rtrace settings of each --radiance-reference run")
         ->capture_default_str();
+    app.add_option("--path-reference", path_reference,
+                   "instead of benchmarking: trace paths from this scene file's first sensor set "
+                   "until --path-error and write them to --out (CSV; see docs/benchmark.md)");
+    app.add_option("--path-error", path_options.relative_error,
+                   "RMS standard error of --path-reference, as a share of the mean")
+        ->check(CLI::Range(1e-5, 0.5))
+        ->capture_default_str();
+    app.add_option("--path-seed", path_options.seed, "seed of --path-reference")
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     const int peer_threads =
         threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -323,6 +335,14 @@ int main(int argc, char** argv) {
         return write_radiance_reference(*bin, *scene, csv, reference_options, std::cout, std::cerr)
                    ? 0
                    : 1;
+    }
+    if (!path_reference.empty()) {
+        const auto scene = load(path_reference);
+        if (!scene) return 2;
+        const std::string csv =
+            fs::path(out_stem).extension() == ".csv" ? out_stem : out_stem + ".csv";
+        path_options.threads = threads;
+        return write_path_reference(*scene, csv, path_options, std::cout, std::cerr) ? 0 : 1;
     }
     std::optional<fs::path> radiance_bin;
     if (peer == "radiance") radiance_bin = radiance_for_peer(std::cout);
@@ -426,15 +446,22 @@ int main(int argc, char** argv) {
         BenchScene bench;
         if (const auto file = scene_files.find(name); file != scene_files.end()) {
             bench.scene = file->second;
-            // A RADIANCE reference beside the file (--radiance-reference writes one) is
-            // independent of Radiant, so it is preferred to a reference solve.
-            const fs::path beside = fs::path(name).replace_extension(".reference.csv");
+            // A reference beside the file is independent of Radiant's solvers, so it is
+            // preferred to a reference solve: RADIANCE's (--radiance-reference), else traced
+            // paths' (--path-reference) where RADIANCE reads the room dark.
+            const fs::path radiance = fs::path(name).replace_extension(".reference.csv");
+            const fs::path paths = fs::path(name).replace_extension(".path-reference.csv");
+            const bool by_radiance = fs::exists(radiance);
+            const fs::path beside = by_radiance ? radiance : paths;
             if (!fs::exists(beside)) {
                 bench.needs_reference = true;
             } else {
                 const SensorSet& first = bench.scene.sensors.at(0);
-                bench.reference = read_reference_csv(
-                    beside, "RADIANCE (" + beside.filename().string() + ")", first.name);
+                bench.reference =
+                    read_reference_csv(beside,
+                                       (by_radiance ? "RADIANCE (" : "traced paths (") +
+                                           beside.filename().string() + ")",
+                                       first.name);
                 if (bench.reference.illuminance.size() != first.points.size()) {
                     std::cerr << "radiant-bench: " << beside.string() << " has "
                               << bench.reference.illuminance.size() << " values, but sensor set \""
