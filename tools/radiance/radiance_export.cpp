@@ -58,8 +58,8 @@ constexpr double kLayerOffsetM = 1e-5;
 // rtrace lights what a ray of low weight reaches (every ambient sample) from an area source
 // taken whole, which misjudges a long one seen from near it: an empty room lit by four LED
 // strips 11.4 m long and 5 cm wide, 0.55 m under its ceiling, read 16 % dark on its floor, and
-// 1.1 % with the strips cut into 0.25 m lengths (whether finer lengths close that too is not
-// measured: docs/radiance-peer.md, "Long emitting surfaces"). An emitting piece longer than
+// 1.1 % and 0.8 % with the strips cut into 0.25 m and 0.1 m lengths, within the runs' noise
+// (docs/radiance-peer.md, "Long emitting surfaces"). An emitting piece longer than
 // this many times its width is written as equal lengths of at most that, in at most
 // kMaxEmitterParts of them (a line of light 100 m long and 1 mm wide would be 25 000).
 constexpr double kMaxEmitterAspect = 4;
