@@ -120,7 +120,8 @@ bool write_path_reference(const Scene& scene, const std::filesystem::path& csv,
     }
     if (set.kind != SensorKind::planar && set.kind != SensorKind::vertical) {
         log << "radiant-bench: sensor set \"" << set.name
-            << "\" is cylindrical; the path reference traces planar and vertical sets\n";
+            << "\" is cylindrical or semi-cylindrical; the path reference traces planar and "
+               "vertical sets\n";
         return false;
     }
     const auto start = std::chrono::steady_clock::now();

@@ -7,6 +7,7 @@
 // About 15 times slower than the final gather for the same noise.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <ostream>
 
