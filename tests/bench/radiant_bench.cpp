@@ -10,6 +10,7 @@
 // traces each scene over a ladder of settings for comparison (radiance_peer.h);
 // --radiance-reference makes a RADIANCE reference for a scene file.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -70,8 +71,7 @@ struct BenchScene {
 
 // Where the per-point reference of a generated scene or a scene file comes from: fills
 // `bench.reference` (source and illuminance of its sensor set) or says why not on stderr and
-// returns false. Today a converged hierarchical solve, cached; an independent renderer (a
-// RADIANCE peer) plugs in beside it under its own --reference name.
+// returns false: a converged solve of the --reference method, or traced paths; both cached.
 using ReferenceSource = std::function<bool(BenchScene& bench)>;
 
 // `furnace` (one glowing material on a closed box) with every reflectance `reflectance`.
@@ -270,7 +270,8 @@ int main(int argc, char** argv) {
     app.add_option("--reference", reference_name,
                    "where the references of the generated scenes and scene files come from: "
                    "monte-carlo or hierarchical (a converged solve of that method, cached; "
-                   "Monte Carlo with a seed of its own)")
+                   "Monte Carlo with a seed of its own), or paths (traced to --path-error, "
+                   "cached)")
         ->capture_default_str();
     app.add_option("--reference-tolerance", reference_tolerance,
                    "tolerance of the converged reference of the offices and scene files")
@@ -533,8 +534,38 @@ int main(int argc, char** argv) {
         return prepare_reference(bench, reference_name, reference_tolerance, reference_seconds,
                                  threads, cache);
     };
+    // Traced paths (as --path-reference writes them), cached as the solves are: keyed by
+    // --path-error, their error estimate the points' RMS standard error over their mean.
+    const auto traced_paths = [&](BenchScene& bench) {
+        auto cached = cache.find(bench.scene, path_options.relative_error);
+        if (!cached) {
+            std::cerr << "radiant-bench: tracing the reference of " << bench.scene.name
+                      << " (paths to " << path_options.relative_error << " of the mean)\n";
+            const fs::path csv = fs::path(cache_dir) / reference_name / "tracing.csv";
+            fs::create_directories(csv.parent_path());
+            path_options.threads = threads;
+            const auto start = std::chrono::steady_clock::now();
+            if (!write_path_reference(bench.scene, csv, path_options, std::cerr, std::cerr))
+                return false;
+            const ReferenceAnswer traced = read_reference_csv(csv, "", bench.reference.sensor);
+            cached = CachedReference{
+                traced.illuminance,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                traced.error_estimate};
+            cache.store(bench.scene, path_options.relative_error, *cached);
+            fs::remove(csv);
+        }
+        bench.reference.source = "traced paths";
+        bench.reference.illuminance = std::move(cached->illuminance);
+        bench.reference.error_estimate = cached->error_estimate;
+        std::cerr << "radiant-bench: reference of " << bench.scene.name << ": traced paths, "
+                  << cached->seconds << " s, standard error " << cached->error_estimate << '\n';
+        return true;
+    };
     const std::map<std::string, ReferenceSource> reference_sources{
-        {"hierarchical", converged_solve}, {"monte-carlo", converged_solve}};
+        {"hierarchical", converged_solve},
+        {"monte-carlo", converged_solve},
+        {"paths", traced_paths}};
     const auto source = reference_sources.find(reference_name);
     if (source == reference_sources.end()) {
         std::cerr << "radiant-bench: unknown reference source " << reference_name << '\n';

@@ -2,7 +2,8 @@
 # scene file (against the RADIANCE reference beside it) with three methods; fails unless it exits
 # 0, prints the table with a row per case, reports the time to error, and writes the Markdown,
 # CSV and (with gnuplot) PNG files.
-# A scene file without sensors must be refused with exit code 2. With --peer radiance the bench
+# A scene file without sensors must be refused with exit code 2; the smallest office is scored
+# against traced paths with --reference paths. With --peer radiance the bench
 # either notes that RADIANCE is not on PATH or adds the peer's table and the speed at equal
 # error; --radiance-reference either fails with that note or writes a reference CSV.
 foreach(ext md csv gp png)
@@ -48,6 +49,16 @@ execute_process(COMMAND ${BENCH} --scenes ${DATA}/scenes/parallel-squares-d1.jso
 string(FIND "${err}" "has no sensors" said)
 if(NOT rc EQUAL 2 OR said EQUAL -1)
   message(FATAL_ERROR "a scene file without sensors was not refused (${rc}): ${out}${err}")
+endif()
+
+# The smallest office against traced paths (--reference paths), cached like the solves.
+execute_process(COMMAND ${BENCH} --scenes office-x1 --methods monte-carlo --tolerance 0.3
+                        --reference paths --path-error 0.05 --out ${OUT}-paths --cache ${CACHE}
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(FIND "${err}" "reference of office-x1: traced paths" traced)
+string(FIND "${out}" "| office-x1 | 500 | monte-carlo | 0.3 |" row)
+if(NOT rc EQUAL 0 OR traced EQUAL -1 OR row EQUAL -1)
+  message(FATAL_ERROR "--reference paths (${rc}): ${out}${err}")
 endif()
 
 execute_process(COMMAND ${BENCH} --scenes parallel-squares-d1,room-s2 --methods direct
