@@ -541,7 +541,10 @@ int main(int argc, char** argv) {
         if (!cached) {
             std::cerr << "radiant-bench: tracing the reference of " << bench.scene.name
                       << " (paths to " << path_options.relative_error << " of the mean)\n";
-            const fs::path csv = fs::path(cache_dir) / reference_name / "tracing.csv";
+            // Named by the scene, so that two benchmarks sharing a cache do not write one file.
+            const fs::path csv =
+                fs::path(cache_dir) / reference_name /
+                ("tracing-" + std::to_string(scene_fingerprint(bench.scene)) + ".csv");
             fs::create_directories(csv.parent_path());
             path_options.threads = threads;
             const auto start = std::chrono::steady_clock::now();
