@@ -11,18 +11,16 @@ namespace {
 // Spread evenly over its surfaces, a furnished room's light averages 10-130 lx (a lounge of three
 // table lamps 16, an office 73, a cove-lit lobby 130). Under this, a flux in the wrong unit is
 // likelier than a room meant to be so dark: the example office's two 3 000 lm panels typed as
-// their 30 W read 0.5 lx, as 3 (klm) 0.05 lx. Under 0.01 lx units_suspect speaks instead.
+// their 30 W read 0.5 lx, as 3 (klm) 0.05 lx. Under kLeastPlausibleMeanLux units_suspect speaks
+// instead.
 constexpr double kLeastMeanLux = 1;
-constexpr double kUnitsLeastMeanLux = 0.01;
 
 // flux_suspect when the light given as flux (luminaires, materials' `flux`), the most of what
 // the scene emits, averages under kLeastMeanLux over the surfaces: it names the brightest source.
 void check_flux_level(const Scene& scene, const PreparedScene& prepared,
-                      std::vector<Warning>& out) {
-    const EmittedLight emitted = emitted_light(prepared);
-    const double mean_lux =
-        prepared.total_area_m2 > 0 ? emitted.total_lm() / prepared.total_area_m2 : 0.0;
-    if (!(mean_lux >= kUnitsLeastMeanLux && mean_lux < kLeastMeanLux)) return;
+                      const EmittedLight& emitted, std::vector<Warning>& out) {
+    const double mean_lux = mean_surface_lux(prepared, emitted);
+    if (!(mean_lux >= kLeastPlausibleMeanLux && mean_lux < kLeastMeanLux)) return;
     // Emission given as exitance (the exact cases' 1 lm/m²) is a radiometric test, not a lamp.
     std::vector<double> material_lm(prepared.materials.size(), 0.0);
     for (const Piece& p : prepared.pieces) {
@@ -63,7 +61,8 @@ void check_flux_level(const Scene& scene, const PreparedScene& prepared,
 }  // namespace
 
 void check_emission(const Scene& scene, const PreparedScene& prepared, std::vector<Warning>& out) {
-    if (!(emitted_light(prepared).total_lm() > 0)) {
+    const EmittedLight emitted = emitted_light(prepared);
+    if (!(emitted.total_lm() > 0)) {
         out.push_back({"no_light",
                        "nothing emits light: every result is 0 lx; add luminaires, or an "
                        "emitting material on a surface",
@@ -78,7 +77,7 @@ void check_emission(const Scene& scene, const PreparedScene& prepared, std::vect
                        "material " + quoted(material.name) + " emits light, but no surface uses it",
                        "/materials/" + escape_pointer_token(material.name) + "/emission"});
     }
-    check_flux_level(scene, prepared, out);
+    check_flux_level(scene, prepared, emitted, out);
 }
 
 }  // namespace radiant

@@ -78,6 +78,10 @@ EmittedLight emitted_light(const PreparedScene& prepared) {
     return out;
 }
 
+double mean_surface_lux(const PreparedScene& prepared, const EmittedLight& emitted) {
+    return prepared.total_area_m2 > 0 ? emitted.total_lm() / prepared.total_area_m2 : 0.0;
+}
+
 std::vector<Warning> modelling_warnings(const CheckedScene& input, std::uint64_t& rays) {
     std::vector<Warning> out;
     check_duplicate_names(input.scene, out);

@@ -45,6 +45,11 @@ struct EmittedLight {
     double total_lm() const { return luminaires_lm + surfaces_lm; }
 };
 EmittedLight emitted_light(const PreparedScene& prepared);
+/// The emitted light spread evenly over every surface (lux; 0 without area).
+double mean_surface_lux(const PreparedScene& prepared, const EmittedLight& emitted);
+/// Under this mean the light fits no interior in any unit (units_suspect); between it and a
+/// furnished room's least, a flux in the wrong unit is likelier (flux_suspect).
+inline constexpr double kLeastPlausibleMeanLux = 0.01;
 
 /// Every pre-solve check, in a fixed order. Counts the rays cast into `rays`. Deterministic in
 /// the seed, whatever the number of threads.

@@ -20,7 +20,7 @@ struct Plausible {
 };
 constexpr Plausible kExtentM{0.1, 1000};
 constexpr Plausible kSpacingM{0.05, 100};
-constexpr Plausible kMeanLux{0.01, 1e6};
+constexpr Plausible kMeanLux{kLeastPlausibleMeanLux, 1e6};
 constexpr double kTypicalExtentM = 10;
 // Nearest neighbours are looked up for at most this many luminaires.
 constexpr std::size_t kSpacingSamples = 256;
@@ -83,9 +83,10 @@ std::string lux_text(double lux) {
 }  // namespace
 
 void check_units(const Scene& scene, const PreparedScene& prepared, std::vector<Warning>& out) {
-    const double emitted_lm = emitted_light(prepared).total_lm();
+    const EmittedLight emitted = emitted_light(prepared);
+    const double emitted_lm = emitted.total_lm();
     const double spacing_m = median_spacing_m(prepared);
-    const double mean_lux = prepared.total_area_m2 > 0 ? emitted_lm / prepared.total_area_m2 : 0.0;
+    const double mean_lux = mean_surface_lux(prepared, emitted);
     std::string what;
     if (!kExtentM.holds(prepared.diagonal_m)) {
         what = "the model is " + length_text(prepared.diagonal_m) + " across";
