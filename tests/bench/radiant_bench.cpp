@@ -172,6 +172,16 @@ constexpr std::uint64_t kReferenceSeed = 1000003;
 // The converged answer of a generated or user's scene: from the cache (one per method), or a
 // solve with `method` at `tolerance` (in a child, so its memory does not inflate the later
 // cases' peaks).
+// A cached reference becomes the scene's, and says so on stderr.
+void adopt_reference(BenchScene& bench, std::string source, CachedReference cached) {
+    bench.reference.source = std::move(source);
+    bench.reference.illuminance = std::move(cached.illuminance);
+    bench.reference.error_estimate = cached.error_estimate;
+    std::cerr << "radiant-bench: reference of " << bench.scene.name << ": "
+              << bench.reference.source << ", " << cached.seconds << " s, error estimate "
+              << cached.error_estimate << '\n';
+}
+
 bool prepare_reference(BenchScene& bench, const std::string& method, double tolerance,
                        double max_seconds, int threads, const ReferenceCache& cache) {
     auto cached = cache.find(bench.scene, tolerance);
@@ -202,12 +212,7 @@ bool prepare_reference(BenchScene& bench, const std::string& method, double tole
     }
     std::ostringstream source;
     source << method << " " << tolerance;
-    bench.reference.source = source.str();
-    bench.reference.illuminance = std::move(cached->illuminance);
-    bench.reference.error_estimate = cached->error_estimate;
-    std::cerr << "radiant-bench: reference of " << bench.scene.name << ": "
-              << bench.reference.source << ", " << cached->seconds << " s, error estimate "
-              << cached->error_estimate << '\n';
+    adopt_reference(bench, source.str(), std::move(*cached));
     return true;
 }
 
@@ -324,13 +329,16 @@ int main(int argc, char** argv) {
     const int peer_threads =
         threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
+    // --out of the reference modes names a CSV file, with or without its extension.
+    const auto reference_csv_name = [&] {
+        return fs::path(out_stem).extension() == ".csv" ? out_stem : out_stem + ".csv";
+    };
     if (!radiance_reference.empty()) {
         const auto scene = load(radiance_reference);
         if (!scene) return 2;
         const auto bin = radiance_for_peer(std::cerr);
         if (!bin) return 1;
-        const std::string csv =
-            fs::path(out_stem).extension() == ".csv" ? out_stem : out_stem + ".csv";
+        const std::string csv = reference_csv_name();
         reference_options.threads = peer_threads;
         reference_options.work_dir = fs::path(csv).replace_extension("").string() + "-radiance";
         return write_radiance_reference(*bin, *scene, csv, reference_options, std::cout, std::cerr)
@@ -340,8 +348,7 @@ int main(int argc, char** argv) {
     if (!path_reference.empty()) {
         const auto scene = load(path_reference);
         if (!scene) return 2;
-        const std::string csv =
-            fs::path(out_stem).extension() == ".csv" ? out_stem : out_stem + ".csv";
+        const std::string csv = reference_csv_name();
         path_options.threads = threads;
         return write_path_reference(*scene, csv, path_options, std::cout, std::cerr) ? 0 : 1;
     }
@@ -558,11 +565,7 @@ int main(int argc, char** argv) {
             cache.store(bench.scene, path_options.relative_error, *cached);
             fs::remove(csv);
         }
-        bench.reference.source = "traced paths";
-        bench.reference.illuminance = std::move(cached->illuminance);
-        bench.reference.error_estimate = cached->error_estimate;
-        std::cerr << "radiant-bench: reference of " << bench.scene.name << ": traced paths, "
-                  << cached->seconds << " s, standard error " << cached->error_estimate << '\n';
+        adopt_reference(bench, "traced paths", std::move(*cached));
         return true;
     };
     const std::map<std::string, ReferenceSource> reference_sources{
