@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 #include "geometry/cosine_direction.h"
 #include "montecarlo/channel_product.h"
@@ -18,6 +20,7 @@ namespace {
 constexpr int kStrata = 8;  // kStrata² = SensorGather::kRaysPerSet
 static_assert(kStrata * kStrata == SensorGather::kRaysPerSet);
 constexpr std::uint64_t kSensorStream = 0x73656e736f72ull, kEyeStream = 0x657965ull;
+constexpr std::uint64_t kCheapStream = 0x6368656170ull;  // a set's cheap rays, apart from its own
 constexpr int kBatches = PhotonField::kBatches;
 // A hit nearer than this many times its element's size sees light that varies across the
 // element (a desk's edge beside a stack of books): it is gathered one bounce further.
@@ -38,11 +41,12 @@ constexpr int kMaxCheckBounces = 4;
 }  // namespace
 
 SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
-                           const LightSources& sources, const Visibility& visibility,
-                           std::uint64_t seed, Points which)
+                           const LightSources& sources, const SideDirectCache& cache,
+                           const Visibility& visibility, std::uint64_t seed, Points which)
     : scene_(scene),
       mesh_(mesh),
       sources_(sources),
+      cache_(cache),
       visibility_(visibility),
       seed_(seed),
       stream_(which == Points::sensors ? kSensorStream : kEyeStream) {
@@ -65,17 +69,25 @@ SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
 std::size_t SensorGather::bytes_per_point() { return sizeof(Point); }
 
 std::size_t SensorGather::bytes_per_set() const {
-    std::size_t hits = 0, near = 0, aiming = 0;
+    std::size_t hits = 0, near = 0, aiming = 0, cheap = 0;
     for (const Point& p : points_) {
         hits += p.hits.size();
         near += p.near.size();
         aiming += p.aimed.empty() ? 0 : 1;
+        // An undecided point keeps its control's mean; one with cheap rays, their mean and sides.
+        const auto cheap_rays = static_cast<std::size_t>(p.cheap_rays_per_set());
+        cheap += p.cheap < 0 ? sizeof(double)
+                 : p.cheap > 0
+                     ? 2 * sizeof(double) +
+                           cheap_rays * (sizeof(int) + (p.aimed.empty() ? 0 : sizeof(float)))
+                     : 0;
     }
     const double share = hits > 0 ? static_cast<double>(near) / static_cast<double>(hits) : 1.0;
     const double aiming_share =
         points_.empty() ? 0.0 : static_cast<double>(aiming) / static_cast<double>(points_.size());
     const double rays = kRaysPerSet + aiming_share * kAimedRaysPerSet;
-    return sizeof(double) + kRaysPerSet / kDepthCheckEvery * sizeof(FarBounce) +
+    const std::size_t cheap_share = points_.empty() ? 0 : cheap / points_.size();
+    return sizeof(double) + cheap_share + kRaysPerSet / kDepthCheckEvery * sizeof(FarBounce) +
            static_cast<std::size_t>(
                std::ceil(rays * (sizeof(int) + share * sizeof(NearHit)) +
                          aiming_share * (kRaysPerSet + kAimedRaysPerSet) * sizeof(float)));
@@ -84,9 +96,12 @@ std::size_t SensorGather::bytes_per_set() const {
 std::size_t SensorGather::memory_bytes() const {
     std::size_t bytes = points_.capacity() * sizeof(Point);
     for (const Point& p : points_) {
-        bytes += p.set_direct.capacity() * sizeof(double) + p.hits.capacity() * sizeof(int) +
-                 p.far.capacity() * sizeof(FarBounce) + p.near.capacity() * sizeof(NearHit) +
-                 p.aimed.capacity() * sizeof(AimedSide) + p.weights.capacity() * sizeof(float) +
+        bytes += (p.set_direct.capacity() + p.set_control.capacity() + p.set_cheap.capacity()) *
+                     sizeof(double) +
+                 (p.hits.capacity() + p.cheap_hits.capacity()) * sizeof(int) +
+                 p.cheap_weights.capacity() * sizeof(float) + p.far.capacity() * sizeof(FarBounce) +
+                 p.near.capacity() * sizeof(NearHit) + p.aimed.capacity() * sizeof(AimedSide) +
+                 p.weights.capacity() * sizeof(float) +
                  p.sources.pieces.capacity() * sizeof(std::size_t) +
                  p.sources.clusters.capacity() * sizeof(int);
     }
@@ -164,7 +179,15 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
     point.hits.reserve(static_cast<std::size_t>(sets) * per_set);
     if (aims) point.weights.reserve(static_cast<std::size_t>(sets) * per_set);
     point.far.reserve(static_cast<std::size_t>(sets) * kRaysPerSet / kDepthCheckEvery);
+    if (point.cheap != 0) point.set_control.reserve(static_cast<std::size_t>(sets));
+    if (point.cheap > 0) {
+        const auto cheap_per_set = static_cast<std::size_t>(point.cheap_rays_per_set());
+        point.set_cheap.reserve(static_cast<std::size_t>(sets));
+        point.cheap_hits.reserve(static_cast<std::size_t>(sets) * cheap_per_set);
+        if (aims) point.cheap_weights.reserve(static_cast<std::size_t>(sets) * cheap_per_set);
+    }
     for (int set = static_cast<int>(point.set_direct.size()); set < sets; ++set) {
+        const std::uint64_t rays_before = rays;
         SampleStream rng(seed_, stream_, index, static_cast<std::uint64_t>(set));
         // A kind that averages receiver normals draws the emitting surfaces' one per set, and
         // one per ray in strata turned by a random offset (any offset covers every stratum).
@@ -173,7 +196,7 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
         double direct = photometric(sources_.sensor_set_light(point.sources, point.position,
                                                               set_normal, visibility_, rng, rays),
                                     channels);
-        double reflected = 0;
+        double reflected = 0, control = 0;
         // One ray's landing, its light weighed against the aimed rays' where the point aims;
         // `aimed_side`: the side an aimed ray was drawn on, −1 for a cosine ray; `check`: a far
         // hit's path goes on (check_path).
@@ -188,8 +211,15 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
                                       ? 0.0
                                       : balance_weight(point.aimed, normal, d, side, hit.t);
             if (aims) point.weights.push_back(static_cast<float>(weight));
+            // The light this ray brings (f) and the control's value where it lands (g).
+            double f = 0, g = 0;
+            const auto tally = [&] {
+                reflected += f;
+                control += g;
+            };
             if (side < 0 || !(weight > 0)) {
                 point.hits.push_back(-1);
+                tally();
                 return;
             }
             const MeshElement& e = mesh_[static_cast<std::size_t>(hit.triangle)];
@@ -197,25 +227,28 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
             const Vec3 n = mesh_.side_normal(side);
             const Vec3 x = origin + d * hit.t;
             const Rgb h = sources_.direct_at(x, n, visibility_, rng, rays);
-            reflected += weight * photometric(times(rho, h), channels);
+            f = weight * photometric(times(rho, h), channels);
+            if (point.cheap != 0) g = weight * cache_.reflected(side);
             // One bounce further, where the element's average is not the light of this spot:
             // always for a near hit; for a far one only to measure what the average misses
             // (check_path).
             const bool far = hit.t >= kNearHit * std::sqrt(e.area_m2);
             if (far && !check) {
                 point.hits.push_back(side);
+                tally();
                 return;
             }
             const Bounce further = bounce(x, n, rng, rays);
             if (far) {
                 point.hits.push_back(side);
                 point.far.push_back(check_path(further, rho, rng, rays));
+                tally();
                 return;
             }
             if (further.side >= 0)
-                reflected +=
-                    weight *
-                    photometric(times(rho, times(further.reflectance, further.direct)), channels);
+                f += weight *
+                     photometric(times(rho, times(further.reflectance, further.direct)), channels);
+            tally();
             point.hits.push_back(-2 - static_cast<int>(point.near.size()));
             point.near.push_back({side, further.side});
         };
@@ -245,7 +278,61 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
             }
         }
         point.set_direct.push_back(direct + reflected / kRaysPerSet);
+        if (point.cheap != 0) point.set_control.push_back(control / kRaysPerSet);
+        if (point.cheap > 0) point.set_cheap.push_back(cast_cheap(index, point, set, rays));
+        if (point.cheap < 0) {
+            point.pilot_sets += 1;
+            point.pilot_rays += static_cast<double>(rays - rays_before);
+        }
     }
+}
+
+double SensorGather::cast_cheap(std::size_t index, Point& point, int set,
+                                std::uint64_t& rays) const {
+    const int m = point.cheap;
+    // In strata of the hemisphere, as the exact rays, rows × columns of them; where the point
+    // aims, with aimed rays in the exact rays' proportion, weighed alike.
+    const int rows = 1 << ((std::bit_width(static_cast<unsigned>(m)) - 1) / 2);
+    const int columns = m / rows;
+    const int aimed = point.cheap_rays_per_set() - m;
+    const double eps = visibility_.epsilon();
+    const double t_max = ray_length(scene_);
+    const SensorReceiver& receiver = point.receiver;
+    const bool fixed = receiver.fixed();
+    const Vec3 fixed_normal = receiver.normal_at(0);
+    SampleStream rng(seed_, stream_ ^ kCheapStream, index, static_cast<std::uint64_t>(set));
+    const int offset = fixed ? 0 : static_cast<int>(rng.next() * m);
+    double sum = 0;
+    const auto cast = [&](const Vec3& normal, const Vec3& d, int aimed_side) {
+        ++rays;
+        const RayHit hit = visibility_.intersect(point.position + normal * eps, d, t_max);
+        const int side = hit.triangle < 0 ? -1 : mesh_.side_hit(hit.triangle, d);
+        const double weight = aimed == 0 ? 1.0
+                              : aimed_side >= 0 && side != aimed_side
+                                  ? 0.0
+                                  : balance_weight(point.aimed, normal, d, side, hit.t);
+        if (aimed > 0) point.cheap_weights.push_back(static_cast<float>(weight));
+        point.cheap_hits.push_back(weight > 0 ? side : -1);
+        if (side >= 0 && weight > 0) sum += weight * cache_.reflected(side);
+    };
+    for (int k = 0; k < m; ++k) {
+        const Vec3 normal =
+            fixed ? fixed_normal : receiver.normal_at(((k + offset) % m + rng.next()) / m);
+        const double r1 = (k / columns + rng.next()) / rows;
+        const double r2 = (k % columns + rng.next()) / columns;
+        cast(normal, cosine_direction(normal, r1, r2), -1);
+    }
+    for (int k = 0; k < aimed; ++k) {
+        const AimedRay ray = bright_.draw(point.aimed, point.position + fixed_normal * eps, rng,
+                                          (k + rng.next()) / aimed);
+        if (dot(fixed_normal, ray.direction) > 0) {
+            cast(fixed_normal, ray.direction, ray.side);
+        } else {  // behind the sensor: nothing to cast
+            point.cheap_weights.push_back(0);
+            point.cheap_hits.push_back(-1);
+        }
+    }
+    return sum / m;
 }
 
 void SensorGather::aim_at_bright_sides(const PhotonField& field, std::size_t max_bytes) {
@@ -286,15 +373,60 @@ std::uint64_t SensorGather::gather(const std::vector<int>& sets, const std::func
     }
     const std::vector<int> target = allot_sets(sets, has, spread, set_sizes_);
     std::vector<std::uint64_t> rays(points_.size(), 0);
+    const std::uint64_t cache_rays = cache_.rays();
     parallel_for(0, points_.size(), [&](std::size_t i) {
         if (!stop()) gather_point(i, points_[i], target[i], rays[i]);
     });
     reached_ = true;
     for (std::size_t i = 0; i < points_.size(); ++i)
         reached_ = reached_ && points_[i].set_direct.size() >= static_cast<std::size_t>(target[i]);
-    std::uint64_t total = 0;
+    if (reached_) decide_cheap_rays(rays);
+    std::uint64_t total = cache_.rays() - cache_rays;
     for (const std::uint64_t r : rays) total += r;
     return total;
+}
+
+void SensorGather::decide_cheap_rays(std::vector<std::uint64_t>& rays) {
+    std::size_t first = 0;
+    for (const std::size_t size : set_sizes_) {
+        const auto points = std::span(points_).subspan(first, size);
+        first += size;
+        if (points.empty() || points.front().cheap >= 0) continue;
+        // Pooled over the set's points: one point's few sets say little.
+        ControlPilot pilot;
+        for (const Point& p : points) {
+            const auto n = static_cast<int>(p.set_direct.size());
+            if (n < 2 || p.set_control.size() != p.set_direct.size()) continue;
+            std::vector<double> residual(p.set_direct.size());
+            for (std::size_t j = 0; j < residual.size(); ++j)
+                residual[j] = p.set_direct[j] - p.set_control[j];
+            // Sample variances of the sets' values, not of their means.
+            pilot.plain += n * sample_variance_of_mean(p.set_direct.data(), n);
+            pilot.residual += n * sample_variance_of_mean(residual.data(), n);
+            pilot.control += n * sample_variance_of_mean(p.set_control.data(), n);
+            pilot.sets += p.pilot_sets;
+            pilot.rays += p.pilot_rays;
+        }
+        if (!(pilot.sets > 0)) continue;  // no point has two sets to tell a spread by yet
+        const int cheap = cheap_rays_per_set(pilot, kRaysPerSet);
+        // The pilot's sets get theirs now, so that every set is of one kind, and the next
+        // round's budget is made from the spread that the sets with cheap rays have.
+        parallel_for(first - size, first, [&](std::size_t i) {
+            Point& p = points_[i];
+            p.cheap = cheap;
+            if (cheap == 0) {
+                std::vector<double>().swap(p.set_control);
+                return;
+            }
+            const std::size_t sets = p.set_direct.size();
+            p.set_cheap.reserve(sets);
+            const auto per_set = static_cast<std::size_t>(p.cheap_rays_per_set());
+            p.cheap_hits.reserve(sets * per_set);
+            if (!p.aimed.empty()) p.cheap_weights.reserve(sets * per_set);
+            for (std::size_t set = 0; set < sets; ++set)
+                p.set_cheap.push_back(cast_cheap(i, p, static_cast<int>(set), rays[i]));
+        });
+    }
 }
 
 std::uint64_t SensorGather::gather(int sets, const std::function<bool()>& stop) {
@@ -383,7 +515,7 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
         };
         // The field's light reflected at `side` toward the point; a near hit's, through the
         // reflectance of the first surface (`first`, else none).
-        auto land = [&](int side, int first, double weight) {
+        auto land = [&](int side, int first, double weight) -> double {
             const int twin = sibling_side(side);
             const double a = area(side), b = area(twin);
             // Never 0/0, even for a sliver whose area rounds to nothing.
@@ -404,15 +536,22 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
             }
             fine += weight * value;
             coarse += weight * (wa * value + wb * value_twin);
+            const double brought = weight * value;
             for (int q = 0; q < kBatches; ++q) {
                 const double f = weight * scale * field.batch_reflected(side, q);
                 batch[static_cast<std::size_t>(q)] += f;
                 batch_coarse[static_cast<std::size_t>(q)] +=
                     twin < 0 ? f : wa * f + wb * scale * field.batch_reflected(twin, q);
             }
+            return brought;
         };
         const int per_set = p.rays_per_set();
         for (int j = 0; j < sets; ++j) {
+            const auto js = static_cast<std::size_t>(j);
+            // With cheap rays, the field's light as the control reads it: at every cheap ray's
+            // element, and where an exact ray lands near, the difference its further bounce makes.
+            const bool cheap = p.cheap > 0;
+            double controlled = 0;
             fine = 0;
             for (int k = 0; k < per_set; ++k) {
                 const auto ray = static_cast<std::size_t>(j * per_set + k);
@@ -423,12 +562,26 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
                     if (k < kRaysPerSet && checks_depth(k)) check_depth(code);
                 } else if (code <= -2) {
                     const NearHit& near = p.near[static_cast<std::size_t>(-2 - code)];
-                    if (near.second >= 0) land(near.second, near.first, weight);
+                    if (near.second >= 0) controlled += land(near.second, near.first, weight);
+                    controlled -= weight * reflected_lux[static_cast<std::size_t>(near.first)];
                 }
             }
             fine_sum += fine;
-            set_value[static_cast<std::size_t>(j)] =
-                p.set_direct[static_cast<std::size_t>(j)] + fine / kRaysPerSet;
+            double value = p.set_direct[js] + fine / kRaysPerSet;
+            if (cheap) {
+                const auto m = static_cast<std::size_t>(p.cheap_rays_per_set());
+                const double share = kRaysPerSet / static_cast<double>(p.cheap);
+                for (std::size_t c = js * m; c < (js + 1) * m; ++c) {
+                    const int side = p.cheap_hits[c];
+                    const double weight = p.cheap_weights.empty() ? 1.0 : p.cheap_weights[c];
+                    if (side >= 0)
+                        controlled +=
+                            weight * reflected_lux[static_cast<std::size_t>(side)] * share;
+                }
+                value = p.set_direct[js] - p.set_control[js] + p.set_cheap[js] +
+                        controlled / kRaysPerSet;
+            }
+            set_value[js] = value;
         }
         const double rays = static_cast<double>(sets) * kRaysPerSet;
         double mean = 0;

@@ -8,7 +8,10 @@
 // that spot. The rays and the direct light are kept, so a denser photon field re-prices them
 // without casting them again. Where sides far brighter than the room face a point (the inside
 // of a lamp's shade), a few rays per set aim at them, weighed against the cosine rays by the
-// balance heuristic (see BrightSides).
+// balance heuristic (see BrightSides). Where the first sets show that which element a ray lands
+// on spreads them most (a room lit from its surfaces), each later set adds many cheap rays that
+// read their elements' cached direct light and field (SideDirectCache, ControlPilot): the exact
+// rays then measure only how far the spots they land on differ from that.
 //
 // Each point's error has three parts, all measured from the data:
 //   gather noise   the spread of its ray sets;
@@ -26,9 +29,11 @@
 #include <vector>
 
 #include "montecarlo/bright_sides.h"
+#include "montecarlo/control_pilot.h"
 #include "montecarlo/element_mesh.h"
 #include "montecarlo/light_sources.h"
 #include "montecarlo/photon_field.h"
+#include "montecarlo/side_direct_cache.h"
 
 namespace radiant {
 
@@ -57,20 +62,24 @@ public:
     static constexpr int kRaysPerSet = 64;  ///< 8 × 8 strata of the cosine-weighted hemisphere
     /// Rays per set aimed at bright sides, besides the cosine rays, at points that aim.
     static constexpr int kAimedRaysPerSet = 16;
+    static constexpr int kAimsPerCosineRays = kRaysPerSet / kAimedRaysPerSet;
 
     /// What a gather measures: the sensor points, in the order of the sets; or the UGR
     /// observers' eyes, each facing its line of sight and gathering all light but the
     /// luminaires' (their glare is rated apart; what remains is the background, E_ind = π L_b).
     enum class Points { sensors, eyes };
 
+    /// `cache` holds the direct light of `sources` at `mesh`'s sides; gathers may share it.
     SensorGather(const PreparedScene& scene, const ElementMesh& mesh, const LightSources& sources,
-                 const Visibility& visibility, std::uint64_t seed, Points which = Points::sensors);
+                 const SideDirectCache& cache, const Visibility& visibility, std::uint64_t seed,
+                 Points which = Points::sensors);
 
     /// Casts ray sets until the points of each sensor set (each eye: a set of one) have
     /// `sets[s]` per point on average, allotted by how each point's sets spread in `last` (the
     /// points' previous evaluate(), if any; see allot_sets), or evenly; the exact luminaire light
-    /// comes with a point's first set. Returns the rays cast. Parallel over points;
-    /// deterministic.
+    /// comes with a point's first set. A sensor set's first gather is its pilot: after it, its
+    /// points take cheap rays in every set if they pay (cheap_rays_per_set), the pilot's sets
+    /// too. Returns the rays cast. Parallel over points; deterministic.
     std::uint64_t gather(const std::vector<int>& sets, const std::function<bool()>& stop,
                          const std::vector<GatheredPoint>& last = {});
     /// The same, `sets` per point in every sensor set, evenly.
@@ -118,12 +127,22 @@ private:
         std::array<float, 3> through{};
     };
     struct Point {
+        /// Cheap rays per set (see ControlPilot): −1 until the pilot decides; from then on every
+        /// set has them.
+        int cheap = -1;
         Vec3 position;
         SensorReceiver receiver;
         bool background = false;                ///< an observer's eye: no luminaire light
         LightSources::SensorSources sources{};  ///< the light tree's cut at the point
         double luminaires = 0;                  ///< photometric, exact
         std::vector<double> set_direct{};  ///< per set: emitting pieces + mean ρ ⊙ E_direct(hit)
+        /// per set, while the pilot runs or with cheap rays: the exact rays' mean of the control
+        std::vector<double> set_control{};
+        std::vector<double> set_cheap{};     ///< per set with cheap rays: their mean of the control
+        std::vector<int> cheap_hits{};       ///< per cheap ray, set by set: its side, −1 for none
+        std::vector<float> cheap_weights{};  ///< with aimed sides, per cheap ray: as `weights`
+        int pilot_sets = 0;                  ///< sets gathered before the pilot decided
+        double pilot_rays = 0;               ///< and the rays they cast
         /// per ray, set by set: the side it landed on, −1 for none, or −2 − i for near[i]
         std::vector<int> hits{};
         std::vector<NearHit> near{};
@@ -135,6 +154,10 @@ private:
         std::vector<float> weights{};
         int rays_per_set() const {
             return aimed.empty() ? kRaysPerSet : kRaysPerSet + kAimedRaysPerSet;
+        }
+        /// Cheap rays per set, the aimed ones included (in the exact rays' proportion).
+        int cheap_rays_per_set() const {
+            return cheap <= 0 ? 0 : aimed.empty() ? cheap : cheap + cheap / kAimsPerCosineRays;
         }
     };
     /// Where a cosine-distributed ray from a hit lands, and what lights that spot directly.
@@ -151,6 +174,11 @@ private:
     FarBounce check_path(const Bounce& first, const Rgb& rho, SampleStream& rng,
                          std::uint64_t& rays) const;
     void gather_point(std::size_t index, Point& point, int sets, std::uint64_t& rays) const;
+    /// Set `set`'s cheap rays at a point that takes them: returns their mean of the control.
+    double cast_cheap(std::size_t index, Point& point, int set, std::uint64_t& rays) const;
+    /// After a sensor set's first gather, whether and how many cheap rays its points take;
+    /// those that do cast them for the sets they have, counted into `rays` (per point).
+    void decide_cheap_rays(std::vector<std::uint64_t>& rays);
     /// The weight of a ray in unit direction d from a point with unit normal n that aims at
     /// `aimed`, landing on `side` (−1: none) at distance t: the cosine rays' density over the
     /// sum of both kinds' (balance heuristic).
@@ -159,6 +187,7 @@ private:
     const PreparedScene& scene_;
     const ElementMesh& mesh_;
     const LightSources& sources_;
+    const SideDirectCache& cache_;
     const Visibility& visibility_;
     std::uint64_t seed_;
     std::uint64_t stream_;  ///< keys the points' samples: the eyes' apart from the sensors'

@@ -73,12 +73,14 @@ struct ComponentLight {
                    const Visibility& visibility, int which, double factor, std::uint64_t seed)
         : sources(scene, visibility.epsilon(), which),
           field(scene, mesh, seed),
-          gather(scene, mesh, sources, visibility, seed),
-          eyes(scene, mesh, sources, visibility, seed, SensorGather::Points::eyes),
+          direct(scene, mesh, sources, visibility, seed),
+          gather(scene, mesh, sources, direct, visibility, seed),
+          eyes(scene, mesh, sources, direct, visibility, seed, SensorGather::Points::eyes),
           component(which),
           maintenance_factor(factor) {}
     LightSources sources;
     PhotonField field;
+    SideDirectCache direct;  ///< the gathers' control variate
     SensorGather gather, eyes;
     int component;  ///< −1: every source
     double maintenance_factor;
@@ -209,7 +211,8 @@ std::size_t level_bytes(const ElementCount& count, std::size_t points, std::size
         static_cast<std::size_t>(display_copies) *
         (count.elements * kDisplayBytesPerElement + count.sides * sizeof(SolvedElement));
     const std::size_t per_component =
-        count.sides * PhotonField::kBytesPerSide + surface_tallies +
+        count.sides * (PhotonField::kBytesPerSide + SideDirectCache::kBytesPerSide) +
+        surface_tallies +
         points * (SensorGather::bytes_per_point() + 4 * kHeapBlockBytes + sizeof(GatheredPoint));
     return count.elements * (sizeof(MeshElement) + kEmbreeBytesPerTriangle) +
            count.sides * sizeof(ElementSide) + components * per_component +
@@ -715,7 +718,8 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
     const ElementMesh& mesh = level->mesh;
     for (const auto& light : level->lights) {
         photons.memory_bytes += light->field.memory_bytes();
-        gathering.memory_bytes += light->gather.memory_bytes() + light->eyes.memory_bytes();
+        gathering.memory_bytes += light->gather.memory_bytes() + light->eyes.memory_bytes() +
+                                  light->direct.memory_bytes();
     }
     for (const StageStats& st : {meshing, photons, gathering, estimating}) stages_.push_back(st);
 
