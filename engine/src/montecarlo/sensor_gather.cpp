@@ -5,7 +5,6 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
-#include <span>
 
 #include "geometry/cosine_direction.h"
 #include "montecarlo/channel_product.h"
@@ -380,53 +379,75 @@ std::uint64_t SensorGather::gather(const std::vector<int>& sets, const std::func
     reached_ = true;
     for (std::size_t i = 0; i < points_.size(); ++i)
         reached_ = reached_ && points_[i].set_direct.size() >= static_cast<std::size_t>(target[i]);
-    if (reached_) decide_cheap_rays(rays);
     std::uint64_t total = cache_.rays() - cache_rays;
     for (const std::uint64_t r : rays) total += r;
     return total;
 }
 
-void SensorGather::decide_cheap_rays(std::vector<std::uint64_t>& rays) {
+int SensorGather::pilot_choice(std::size_t first, std::size_t size) const {
+    // Pooled over the set's points: one point's few sets say little.
+    ControlPilot pilot;
+    for (std::size_t i = first; i < first + size; ++i) {
+        const Point& p = points_[i];
+        const auto n = static_cast<int>(p.set_direct.size());
+        if (n < 2 || p.set_control.size() != p.set_direct.size()) continue;
+        std::vector<double> residual(p.set_direct.size());
+        for (std::size_t j = 0; j < residual.size(); ++j)
+            residual[j] = p.set_direct[j] - p.set_control[j];
+        // Sample variances of the sets' values, not of their means.
+        pilot.plain += n * sample_variance_of_mean(p.set_direct.data(), n);
+        pilot.residual += n * sample_variance_of_mean(residual.data(), n);
+        pilot.control += n * sample_variance_of_mean(p.set_control.data(), n);
+        pilot.sets += p.pilot_sets;
+        pilot.rays += p.pilot_rays;
+    }
+    return pilot.sets > 0 ? cheap_rays_per_set(pilot, kRaysPerSet) : -1;
+}
+
+std::uint64_t SensorGather::take_cheap_rays(const std::function<bool()>& stop,
+                                            std::size_t max_bytes) {
+    set_cheap_.resize(set_sizes_.size(), -1);
+    const std::uint64_t cache_rays = cache_.rays();
+    std::vector<std::uint64_t> rays(points_.size(), 0);
     std::size_t first = 0;
-    for (const std::size_t size : set_sizes_) {
-        const auto points = std::span(points_).subspan(first, size);
+    for (std::size_t s = 0; s < set_sizes_.size(); ++s) {
+        const std::size_t begin = first, size = set_sizes_[s];
         first += size;
-        if (points.empty() || points.front().cheap >= 0) continue;
-        // Pooled over the set's points: one point's few sets say little.
-        ControlPilot pilot;
-        for (const Point& p : points) {
-            const auto n = static_cast<int>(p.set_direct.size());
-            if (n < 2 || p.set_control.size() != p.set_direct.size()) continue;
-            std::vector<double> residual(p.set_direct.size());
-            for (std::size_t j = 0; j < residual.size(); ++j)
-                residual[j] = p.set_direct[j] - p.set_control[j];
-            // Sample variances of the sets' values, not of their means.
-            pilot.plain += n * sample_variance_of_mean(p.set_direct.data(), n);
-            pilot.residual += n * sample_variance_of_mean(residual.data(), n);
-            pilot.control += n * sample_variance_of_mean(p.set_control.data(), n);
-            pilot.sets += p.pilot_sets;
-            pilot.rays += p.pilot_rays;
+        if (set_cheap_[s] < 0) {
+            const int cheap = pilot_choice(begin, size);
+            std::size_t bytes = 0;
+            for (std::size_t i = begin; i < begin + size; ++i) {
+                const Point& p = points_[i];
+                const auto per_set = static_cast<std::size_t>(cheap_rays(cheap, !p.aimed.empty()));
+                bytes += p.set_direct.size() *
+                         (sizeof(double) +
+                          per_set * (sizeof(int) + (p.aimed.empty() ? 0 : sizeof(float))));
+            }
+            set_cheap_[s] = bytes <= max_bytes ? cheap : 0;
+            if (cheap > 0 && bytes <= max_bytes) max_bytes -= bytes;
         }
-        if (!(pilot.sets > 0)) continue;  // no point has two sets to tell a spread by yet
-        const int cheap = cheap_rays_per_set(pilot, kRaysPerSet);
-        // The pilot's sets get theirs now, so that every set is of one kind, and the next
-        // round's budget is made from the spread that the sets with cheap rays have.
-        parallel_for(first - size, first, [&](std::size_t i) {
+        const int cheap = set_cheap_[s];
+        if (cheap < 0) continue;
+        parallel_for(begin, begin + size, [&](std::size_t i) {
             Point& p = points_[i];
+            if (p.cheap >= 0 || stop()) return;
             p.cheap = cheap;
             if (cheap == 0) {
                 std::vector<double>().swap(p.set_control);
                 return;
             }
             const std::size_t sets = p.set_direct.size();
-            p.set_cheap.reserve(sets);
             const auto per_set = static_cast<std::size_t>(p.cheap_rays_per_set());
+            p.set_cheap.reserve(sets);
             p.cheap_hits.reserve(sets * per_set);
             if (!p.aimed.empty()) p.cheap_weights.reserve(sets * per_set);
             for (std::size_t set = 0; set < sets; ++set)
                 p.set_cheap.push_back(cast_cheap(i, p, static_cast<int>(set), rays[i]));
         });
     }
+    std::uint64_t total = cache_.rays() - cache_rays;
+    for (const std::uint64_t r : rays) total += r;
+    return total;
 }
 
 std::uint64_t SensorGather::gather(int sets, const std::function<bool()>& stop) {

@@ -77,13 +77,19 @@ public:
     /// Casts ray sets until the points of each sensor set (each eye: a set of one) have
     /// `sets[s]` per point on average, allotted by how each point's sets spread in `last` (the
     /// points' previous evaluate(), if any; see allot_sets), or evenly; the exact luminaire light
-    /// comes with a point's first set. A sensor set's first gather is its pilot: after it, its
-    /// points take cheap rays in every set if they pay (cheap_rays_per_set), the pilot's sets
-    /// too. Returns the rays cast. Parallel over points; deterministic.
+    /// comes with a point's first set. Returns the rays cast. Parallel over points;
+    /// deterministic.
     std::uint64_t gather(const std::vector<int>& sets, const std::function<bool()>& stop,
                          const std::vector<GatheredPoint>& last = {});
     /// The same, `sets` per point in every sensor set, evenly.
     std::uint64_t gather(int sets, const std::function<bool()>& stop);
+    /// After the first gather (the pilot), whether the points of each sensor set take cheap
+    /// rays in every set, and how many (cheap_rays_per_set, from their sets' spread with and
+    /// without the control); those that do get them for the sets they have, so that every set
+    /// is of one kind, unless that takes more than `max_bytes` (cheap rays only save rays).
+    /// Called when another gather follows: a solve that its first round ends needs none.
+    /// Returns the rays cast. Parallel over points; deterministic.
+    std::uint64_t take_cheap_rays(const std::function<bool()>& stop, std::size_t max_bytes);
     /// Points not gathered yet aim part of their rays at the bright sides of `field` (the
     /// sensors' fixed-normal points; not the eyes, nor receivers that average their normal), if
     /// all points' aims take at most `max_bytes`; else none aims.
@@ -156,9 +162,7 @@ private:
             return aimed.empty() ? kRaysPerSet : kRaysPerSet + kAimedRaysPerSet;
         }
         /// Cheap rays per set, the aimed ones included (in the exact rays' proportion).
-        int cheap_rays_per_set() const {
-            return cheap <= 0 ? 0 : aimed.empty() ? cheap : cheap + cheap / kAimsPerCosineRays;
-        }
+        int cheap_rays_per_set() const { return cheap_rays(cheap, !aimed.empty()); }
     };
     /// Where a cosine-distributed ray from a hit lands, and what lights that spot directly.
     struct Bounce {
@@ -176,9 +180,13 @@ private:
     void gather_point(std::size_t index, Point& point, int sets, std::uint64_t& rays) const;
     /// Set `set`'s cheap rays at a point that takes them: returns their mean of the control.
     double cast_cheap(std::size_t index, Point& point, int set, std::uint64_t& rays) const;
-    /// After a sensor set's first gather, whether and how many cheap rays its points take;
-    /// those that do cast them for the sets they have, counted into `rays` (per point).
-    void decide_cheap_rays(std::vector<std::uint64_t>& rays);
+    /// The cheap rays a set casts for `cheap` cosine ones, with those aimed where it `aims`.
+    static int cheap_rays(int cheap, bool aims) {
+        return cheap <= 0 ? 0 : aims ? cheap + cheap / kAimsPerCosineRays : cheap;
+    }
+    /// The cheap rays per set the pilot's sets of points [first, first + size) pay for, or −1
+    /// where no point has two sets to tell a spread by.
+    int pilot_choice(std::size_t first, std::size_t size) const;
     /// The weight of a ray in unit direction d from a point with unit normal n that aims at
     /// `aimed`, landing on `side` (−1: none) at distance t: the cosine rays' density over the
     /// sum of both kinds' (balance heuristic).
@@ -193,6 +201,7 @@ private:
     std::uint64_t stream_;  ///< keys the points' samples: the eyes' apart from the sensors'
     std::vector<Point> points_;
     std::vector<std::size_t> set_sizes_;
+    std::vector<int> set_cheap_;  ///< per sensor set: its points' cheap rays, −1 undecided
     BrightSides bright_;
     bool reached_ = false;
 };

@@ -597,20 +597,22 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             gathering.seconds += seconds_since(stage_start);
             // Stage: estimate — every point's value and error parts on the field so far.
             stage_start = Clock::now();
-            for (const auto& light : level->lights) {
-                if (done(*light)) continue;
-                light->points = light->gather.evaluate(light->field);
-                light->set_errors = set_errors(light->points, set_sizes);
-                light->error = on_surfaces
-                                   ? surface_error(scene, {{&light->field, 1.0, light->component}})
-                                   : worst_error(light->set_errors);
-                light->eye_points = light->eyes.evaluate(light->field);
-                light->eye_errors = set_errors(light->eye_points, eye_sizes);
+            const auto estimate = [&](ComponentLight& light) {
+                light.points = light.gather.evaluate(light.field);
+                light.set_errors = set_errors(light.points, set_sizes);
+                light.error = on_surfaces
+                                  ? surface_error(scene, {{&light.field, 1.0, light.component}})
+                                  : worst_error(light.set_errors);
+                light.eye_points = light.eyes.evaluate(light.field);
+                light.eye_errors = set_errors(light.eye_points, eye_sizes);
                 // The eyes' are budgeted at the tolerance over their own target.
-                light->eye_error = worst_error(light->eye_errors, eye_scale);
+                light.eye_error = worst_error(light.eye_errors, eye_scale);
                 // A later round never claims a larger error for its better answer.
-                light->reported = std::min(light->reported, light->error.total);
-                light->eye_reported = std::min(light->eye_reported, light->eye_error.total);
+                light.reported = std::min(light.reported, light.error.total);
+                light.eye_reported = std::min(light.eye_reported, light.eye_error.total);
+            };
+            for (const auto& light : level->lights) {
+                if (!done(*light)) estimate(*light);
             }
             error = maintained_error(scene, *level, on_surfaces);
             reported = std::min(reported, error.total);
@@ -679,6 +681,29 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
                 stopped = !refine;
                 break;
             }
+            // Stage: gather — after a level's first round, its pilot, the points whose sets a
+            // control variate pays for take cheap rays, their sets so far included, and the
+            // next round is budgeted on those sets' spread.
+            stage_start = Clock::now();
+            bool cheapened = false;
+            for (const auto& light : level->lights) {
+                if (done(*light)) continue;
+                const std::uint64_t sensor_rays =
+                    light->gather.take_cheap_rays(stop, memory_->available_bytes());
+                const std::uint64_t eye_cheap_rays =
+                    light->eyes.take_cheap_rays(stop, memory_->available_bytes());
+                rays_ += sensor_rays + eye_cheap_rays;
+                gathering.rays += sensor_rays + eye_cheap_rays;
+                eye_rays += eye_cheap_rays;
+                if (sensor_rays + eye_cheap_rays == 0) continue;
+                estimate(*light);
+                cheapened = true;
+            }
+            if (cheapened) {
+                error = maintained_error(scene, *level, on_surfaces);
+                reported = std::min(reported, error.total);
+            }
+            gathering.seconds += seconds_since(stage_start);
             std::size_t traced = 0;
             int sets = 0, eye_sets = 0;
             for (const auto& light : level->lights) {
