@@ -11,10 +11,10 @@
 namespace radiant {
 namespace {
 
-// Chunks traced between two looks at `stop` (64 Ki photons), a whole number of batch rounds;
+// Chunks traced between two looks at `stop` (32 Ki photons), a whole number of batch rounds;
 // their deposits are held until the wave is summed (a few MB), enough chunks to keep every core
 // busy.
-constexpr std::size_t kWaveChunks = 65536 / PhotonField::kChunkPhotons;
+constexpr std::size_t kWaveChunks = 32768 / PhotonField::kChunkPhotons;
 static_assert(kWaveChunks % PhotonField::kBatches == 0);
 // A photon in a furnace of reflectance 0.999 bounces a thousand times on average; this only
 // stops one that a rounding error keeps inside a closed solid.
@@ -80,7 +80,9 @@ Rgb PhotonField::total(int side) const {
 std::size_t PhotonField::wave_bytes(double mean_reflectance) {
     const double deposits = 1 / (1 - std::clamp(mean_reflectance, 0.0, 0.98));
     return static_cast<std::size_t>(
-        2 * deposits * static_cast<double>(kWaveChunks * kChunkPhotons * sizeof(Deposit)));
+        2 * deposits *
+        static_cast<double>(kWaveChunks * kChunkPhotons *
+                            (sizeof(SideDeposit) + sizeof(FrontDeposit))));
 }
 
 std::size_t PhotonField::memory_bytes() const {
@@ -91,7 +93,7 @@ std::size_t PhotonField::memory_bytes() const {
 }
 
 void PhotonField::trace_chunk(std::size_t chunk, const LightSources& sources,
-                              const Visibility& visibility, std::vector<Deposit>& out,
+                              const Visibility& visibility, ChunkDeposits& out,
                               std::uint64_t& rays) const {
     const double eps = visibility.epsilon();
     const double t_max = 4 * scene_.diagonal_m + 1;
@@ -106,9 +108,15 @@ void PhotonField::trace_chunk(std::size_t chunk, const LightSources& sources,
             if (hit.triangle < 0) break;
             const int side = mesh_.side_hit(hit.triangle, direction);
             if (side < 0) break;
-            out.push_back({side, bounce > 0, flux});
             const MeshElement& e = mesh_[static_cast<std::size_t>(hit.triangle)];
             const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
+            const double reflected = photometric(times(rho, flux), scene_.channels);
+            out.sides[static_cast<std::size_t>(side) % kSumParts].push_back(
+                {side, bounce > 0, flux, reflected});
+            if (side == e.front) {
+                out.fronts.push_back({counted_slot_[static_cast<std::size_t>(e.surface)],
+                                      photometric(flux, scene_.channels), reflected});
+            }
             const double survive = std::min(1.0, std::max({rho[0], rho[1], rho[2]}));
             if (!(survive > 0) || rng.next() >= survive) break;
             for (int c = 0; c < 3; ++c) flux[c] *= rho[c] / survive;
@@ -119,26 +127,32 @@ void PhotonField::trace_chunk(std::size_t chunk, const LightSources& sources,
     }
 }
 
-void PhotonField::add_deposit(const Deposit& d, std::size_t batch) {
-    const auto s = static_cast<std::size_t>(d.side);
-    const ElementSide& side = mesh_.sides()[s];
-    const MeshElement& e = mesh_[static_cast<std::size_t>(side.element)];
-    const Rgb& rho = scene_.materials[static_cast<std::size_t>(e.material)].reflectance;
-    const double reflected = photometric(times(rho, d.flux), scene_.channels);
-    for (int c = 0; c < 3; ++c) total_[s][c] += d.flux[c];
-    if (!side.back) {
-        const double irradiance = photometric(d.flux, scene_.channels);
-        front_[0] += irradiance;
-        front_[1] += reflected;
-        if (const int k = counted_slot_[static_cast<std::size_t>(e.surface)]; k >= 0) {
-            const std::size_t at = (static_cast<std::size_t>(k) * kBatches + batch) * 2;
-            surface_batch_[at] += irradiance;
-            surface_batch_[at + 1] += reflected;
+void PhotonField::add_wave(const std::vector<ChunkDeposits>& deposits, std::size_t wave,
+                           std::size_t first) {
+    parallel_for(0, kSumParts + 1, [&](std::size_t part) {
+        for (std::size_t k = 0; k < wave; ++k) {
+            const std::size_t batch = (first + k) % kBatches;
+            if (part == kSumParts) {
+                for (const FrontDeposit& d : deposits[k].fronts) {
+                    front_[0] += d.irradiance;
+                    front_[1] += d.reflected;
+                    if (d.slot < 0) continue;
+                    const std::size_t at =
+                        (static_cast<std::size_t>(d.slot) * kBatches + batch) * 2;
+                    surface_batch_[at] += d.irradiance;
+                    surface_batch_[at + 1] += d.reflected;
+                }
+                continue;
+            }
+            for (const SideDeposit& d : deposits[k].sides[part]) {
+                const auto s = static_cast<std::size_t>(d.side);
+                for (int c = 0; c < 3; ++c) total_[s][c] += d.flux[c];
+                if (!d.indirect) continue;
+                for (int c = 0; c < 3; ++c) indirect_[s][c] += d.flux[c];
+                batch_[s * kBatches + batch] += static_cast<float>(d.reflected);
+            }
         }
-    }
-    if (!d.indirect) return;
-    for (int c = 0; c < 3; ++c) indirect_[s][c] += d.flux[c];
-    batch_[s * kBatches + batch] += static_cast<float>(reflected);
+    });
 }
 
 std::uint64_t PhotonField::trace(std::size_t photons, const LightSources& sources,
@@ -147,7 +161,7 @@ std::uint64_t PhotonField::trace(std::size_t photons, const LightSources& source
     const std::size_t round = kBatches * kChunkPhotons;
     std::size_t remaining = (photons + round - 1) / round * kBatches;
     std::uint64_t rays = 0;
-    std::vector<std::vector<Deposit>> deposits(kWaveChunks);
+    std::vector<ChunkDeposits> deposits(kWaveChunks);
     std::vector<std::uint64_t> wave_rays(kWaveChunks);
     while (remaining > 0 && !stop()) {
         const std::size_t wave = std::min(remaining, kWaveChunks);
@@ -156,11 +170,8 @@ std::uint64_t PhotonField::trace(std::size_t photons, const LightSources& source
             wave_rays[k] = 0;
             trace_chunk(chunks_ + k, sources, visibility, deposits[k], wave_rays[k]);
         });
-        // In chunk order: the sums do not depend on which thread traced what.
-        for (std::size_t k = 0; k < wave; ++k) {
-            for (const Deposit& d : deposits[k]) add_deposit(d, (chunks_ + k) % kBatches);
-            rays += wave_rays[k];
-        }
+        add_wave(deposits, wave, chunks_);
+        for (std::size_t k = 0; k < wave; ++k) rays += wave_rays[k];
         chunks_ += wave;
         remaining -= wave;
     }
