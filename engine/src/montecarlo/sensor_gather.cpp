@@ -73,13 +73,8 @@ std::size_t SensorGather::bytes_per_set() const {
         hits += p.hits.size();
         near += p.near.size();
         aiming += p.aimed.empty() ? 0 : 1;
-        // An undecided point keeps its control's mean; one with cheap rays, their mean and sides.
-        const auto cheap_rays = static_cast<std::size_t>(p.cheap_rays_per_set());
-        cheap += p.cheap < 0 ? sizeof(double)
-                 : p.cheap > 0
-                     ? 2 * sizeof(double) +
-                           cheap_rays * (sizeof(int) + (p.aimed.empty() ? 0 : sizeof(float)))
-                     : 0;
+        // An undecided point keeps its control's mean; one with cheap rays, that and theirs.
+        cheap += p.cheap == 0 ? 0 : sizeof(double) + cheap_bytes(p.cheap, !p.aimed.empty());
     }
     const double share = hits > 0 ? static_cast<double>(near) / static_cast<double>(hits) : 1.0;
     const double aiming_share =
@@ -418,10 +413,7 @@ std::uint64_t SensorGather::take_cheap_rays(const std::function<bool()>& stop,
             std::size_t bytes = 0;
             for (std::size_t i = begin; i < begin + size; ++i) {
                 const Point& p = points_[i];
-                const auto per_set = static_cast<std::size_t>(cheap_rays(cheap, !p.aimed.empty()));
-                bytes += p.set_direct.size() *
-                         (sizeof(double) +
-                          per_set * (sizeof(int) + (p.aimed.empty() ? 0 : sizeof(float))));
+                bytes += p.set_direct.size() * cheap_bytes(cheap, !p.aimed.empty());
             }
             set_cheap_[s] = bytes <= max_bytes ? cheap : 0;
             if (cheap > 0 && bytes <= max_bytes) max_bytes -= bytes;
@@ -557,14 +549,13 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
             }
             fine += weight * value;
             coarse += weight * (wa * value + wb * value_twin);
-            const double brought = weight * value;
             for (int q = 0; q < kBatches; ++q) {
                 const double f = weight * scale * field.batch_reflected(side, q);
                 batch[static_cast<std::size_t>(q)] += f;
                 batch_coarse[static_cast<std::size_t>(q)] +=
                     twin < 0 ? f : wa * f + wb * scale * field.batch_reflected(twin, q);
             }
-            return brought;
+            return weight * value;
         };
         const int per_set = p.rays_per_set();
         for (int j = 0; j < sets; ++j) {

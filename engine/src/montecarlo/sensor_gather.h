@@ -184,6 +184,12 @@ private:
     static int cheap_rays(int cheap, bool aims) {
         return cheap <= 0 ? 0 : aims ? cheap + cheap / kAimsPerCosineRays : cheap;
     }
+    /// What they add to a set: their mean, their sides and, where it aims, their weights.
+    static std::size_t cheap_bytes(int cheap, bool aims) {
+        if (cheap <= 0) return 0;
+        return sizeof(double) + static_cast<std::size_t>(cheap_rays(cheap, aims)) *
+                                    (sizeof(int) + (aims ? sizeof(float) : 0));
+    }
     /// The cheap rays per set the pilot's sets of points [first, first + size) pay for, or −1
     /// where no point has two sets to tell a spread by.
     int pilot_choice(std::size_t first, std::size_t size) const;
