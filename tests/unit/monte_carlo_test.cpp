@@ -49,6 +49,28 @@ GatheredPoint first_point(const PreparedScene& prepared, double edge, std::size_
     return gather.evaluate(field).at(0);
 }
 
+// What a gather needs: a scene's mesh of edge `edge`, its ray tracer, its sources, a photon field
+// of `photons` and the direct-light cache.
+struct GatherSetup {
+    GatherSetup(const Scene& scene, double edge, std::size_t photons)
+        : prepared(prepare_scene(scene)),
+          mesh(prepared, {edge}),
+          visibility(make_embree_visibility(mesh.triangles())),
+          sources(prepared, visibility->epsilon()),
+          field(prepared, mesh, 5),
+          cache(prepared, mesh, sources, *visibility, 7) {
+        field.trace(photons, sources, *visibility, [] { return false; });
+    }
+    SensorGather gather() const { return {prepared, mesh, sources, cache, *visibility, 7}; }
+
+    PreparedScene prepared;
+    ElementMesh mesh;
+    std::unique_ptr<Visibility> visibility;
+    LightSources sources;
+    PhotonField field;
+    SideDirectCache cache;
+};
+
 double rms_relative_error(const std::vector<double>& values, const std::vector<double>& exact) {
     double sum = 0, mean = 0;
     for (std::size_t i = 0; i < values.size(); ++i) {
@@ -717,20 +739,14 @@ TEST(SensorGather, RaysAimedAtBrightSidesKeepTheMeanAndCutTheSpread) {
     scene.luminaires.push_back(
         testing::luminaire("bulb", {0, 0, 1.7}, 1000, Distribution::isotropic));
     scene.sensors.push_back(testing::sensor_points("below", {{0.2, 0.1, 0.75}}));
-    const PreparedScene prepared = prepare_scene(scene);
-    const ElementMesh mesh(prepared, {0.05});
-    const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
-    const LightSources sources(prepared, visibility->epsilon());
-    PhotonField field(prepared, mesh, 5);
+    const GatherSetup setup(scene, 0.05, 1 << 20);
+    SensorGather cosine = setup.gather(), aimed = setup.gather();
+    aimed.aim_at_bright_sides(setup.field, std::size_t{1} << 30);
     const auto never = [] { return false; };
-    field.trace(1 << 20, sources, *visibility, never);
-    const SideDirectCache cache(prepared, mesh, sources, *visibility, 7);
-    SensorGather cosine(prepared, mesh, sources, cache, *visibility, 7);
-    SensorGather aimed(prepared, mesh, sources, cache, *visibility, 7);
-    aimed.aim_at_bright_sides(field, std::size_t{1} << 30);
     cosine.gather(2000, never);
     aimed.gather(2000, never);
-    const GatheredPoint a = aimed.evaluate(field).at(0), c = cosine.evaluate(field).at(0);
+    const GatheredPoint a = aimed.evaluate(setup.field).at(0);
+    const GatheredPoint c = cosine.evaluate(setup.field).at(0);
     EXPECT_NEAR(a.illuminance, c.illuminance, 4 * std::sqrt(a.gather_variance + c.gather_variance));
     EXPECT_LT(a.gather_variance, c.gather_variance / 10);
 }
@@ -744,41 +760,21 @@ TEST(SensorGather, CheapRaysKeepTheMeanAndCutTheSpreadUnderATable) {
     scene.surfaces.push_back(
         testing::box_surface("table", "wall", {1.4, 1.4, 0.7}, {2.6, 2.6, 0.75}, false));
     scene.sensors.push_back(testing::sensor_points("under", {{2, 2, 0.3}}));
-    const PreparedScene prepared = prepare_scene(scene);
-    const ElementMesh mesh(prepared, {0.25});
-    const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
-    const LightSources sources(prepared, visibility->epsilon());
-    PhotonField field(prepared, mesh, 5);
+    const GatherSetup setup(scene, 0.25, 1 << 20);
+    SensorGather plain = setup.gather(), cheap = setup.gather(), tight = setup.gather();
     const auto never = [] { return false; };
-    field.trace(1 << 20, sources, *visibility, never);
-    const SideDirectCache cache(prepared, mesh, sources, *visibility, 7);
-    SensorGather plain(prepared, mesh, sources, cache, *visibility, 7);
-    SensorGather cheap(prepared, mesh, sources, cache, *visibility, 7);
     plain.gather(256, never);
     cheap.gather(8, never);
     EXPECT_GT(cheap.take_cheap_rays(never, std::size_t{1} << 30), 0u);
+    // Cheap rays only save rays: where the pilot's sets would not hold theirs, none are taken.
+    tight.gather(8, never);
+    EXPECT_EQ(tight.take_cheap_rays(never, 1024), 0u);
     cheap.gather(256, never);
-    const GatheredPoint p = plain.evaluate(field).at(0), c = cheap.evaluate(field).at(0);
+    const GatheredPoint p = plain.evaluate(setup.field).at(0);
+    const GatheredPoint c = cheap.evaluate(setup.field).at(0);
     EXPECT_EQ(c.sets, 256);
     EXPECT_NEAR(c.illuminance, p.illuminance, 4 * std::sqrt(p.gather_variance + c.gather_variance));
     EXPECT_LT(c.gather_variance, p.gather_variance / 10);
-}
-
-// Cheap rays only save rays: where the pilot's sets would not hold theirs in memory, none.
-TEST(SensorGather, CheapRaysThatDoNotFitAreNotTaken) {
-    Scene scene = testing::room_with_ceiling_panel(0.7, 1000);
-    scene.surfaces.push_back(
-        testing::box_surface("table", "wall", {1.4, 1.4, 0.7}, {2.6, 2.6, 0.75}, false));
-    scene.sensors.push_back(testing::sensor_points("under", {{2, 2, 0.3}}));
-    const PreparedScene prepared = prepare_scene(scene);
-    const ElementMesh mesh(prepared, {0.25});
-    const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
-    const LightSources sources(prepared, visibility->epsilon());
-    const auto never = [] { return false; };
-    const SideDirectCache cache(prepared, mesh, sources, *visibility, 7);
-    SensorGather gather(prepared, mesh, sources, cache, *visibility, 7);
-    gather.gather(8, never);
-    EXPECT_EQ(gather.take_cheap_rays(never, 1024), 0u);
 }
 
 // Two sets of 50 points with the same photon variance per point: in one each point's batches
