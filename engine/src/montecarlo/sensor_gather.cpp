@@ -68,14 +68,24 @@ SensorGather::SensorGather(const PreparedScene& scene, const ElementMesh& mesh,
 std::size_t SensorGather::bytes_per_point() { return sizeof(Point); }
 
 std::size_t SensorGather::bytes_per_set() const {
-    std::size_t hits = 0, near = 0, aiming = 0, cheap = 0;
+    std::size_t hits = 0, near = 0, aiming = 0, cheap = 0, cheap_rays = 0, tallied = 0,
+                tallied_rays = 0;
     for (const Point& p : points_) {
         hits += p.hits.size();
         near += p.near.size();
         aiming += p.aimed.empty() ? 0 : 1;
         // An undecided point keeps its control's mean; one with cheap rays, that and theirs.
         cheap += p.cheap == 0 ? 0 : sizeof(double) + cheap_bytes(p.cheap, !p.aimed.empty());
+        cheap_rays += static_cast<std::size_t>(p.cheap_rays_per_set());
+        tallied += p.cheap_tally.size();
+        tallied_rays += p.cheap_tally_sets * static_cast<std::size_t>(p.cheap_rays_per_set());
     }
+    // A tally grows by a side per cheap ray at most, and less as its sides repeat: at the share
+    // seen so far.
+    const double tally_share =
+        tallied_rays > 0 ? static_cast<double>(tallied) / static_cast<double>(tallied_rays) : 1.0;
+    cheap += static_cast<std::size_t>(
+        std::ceil(tally_share * static_cast<double>(cheap_rays * sizeof(SideWeight))));
     const double share = hits > 0 ? static_cast<double>(near) / static_cast<double>(hits) : 1.0;
     const double aiming_share =
         points_.empty() ? 0.0 : static_cast<double>(aiming) / static_cast<double>(points_.size());
@@ -93,6 +103,7 @@ std::size_t SensorGather::memory_bytes() const {
         bytes += (p.set_direct.capacity() + p.set_control.capacity() + p.set_cheap.capacity()) *
                      sizeof(double) +
                  (p.hits.capacity() + p.cheap_hits.capacity()) * sizeof(int) +
+                 p.cheap_tally.capacity() * sizeof(SideWeight) +
                  p.cheap_weights.capacity() * sizeof(float) + p.far.capacity() * sizeof(FarBounce) +
                  p.near.capacity() * sizeof(NearHit) + p.aimed.capacity() * sizeof(AimedSide) +
                  p.weights.capacity() * sizeof(float) +
@@ -279,6 +290,32 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
             point.pilot_rays += static_cast<double>(rays - rays_before);
         }
     }
+    if (point.cheap > 0 && point.cheap_tally_sets < point.set_cheap.size())
+        tally_cheap(point, point.cheap_tally_sets, point.set_cheap.size());
+}
+
+void SensorGather::tally_cheap(Point& point, std::size_t from, std::size_t to) {
+    const auto m = static_cast<std::size_t>(point.cheap_rays_per_set());
+    std::vector<SideWeight> added;
+    added.reserve((to - from) * m);
+    for (std::size_t c = from * m; c < to * m; ++c) {
+        const int side = point.cheap_hits[c];
+        if (side >= 0)
+            added.push_back({side, point.cheap_weights.empty() ? 1.0f : point.cheap_weights[c]});
+    }
+    added.insert(added.end(), point.cheap_tally.begin(), point.cheap_tally.end());
+    // Stable: equal sides keep their order, so the sums do not depend on the sort.
+    std::ranges::stable_sort(added, {}, &SideWeight::side);
+    std::vector<SideWeight> tally;
+    for (const SideWeight& a : added) {
+        if (!tally.empty() && tally.back().side == a.side) {
+            tally.back().weight += a.weight;
+        } else {
+            tally.push_back(a);
+        }
+    }
+    point.cheap_tally = std::move(tally);
+    point.cheap_tally_sets = to;
 }
 
 double SensorGather::cast_cheap(std::size_t index, Point& point, int set,
@@ -435,6 +472,7 @@ std::uint64_t SensorGather::take_cheap_rays(const std::function<bool()>& stop,
             if (!p.aimed.empty()) p.cheap_weights.reserve(sets * per_set);
             for (std::size_t set = 0; set < sets; ++set)
                 p.set_cheap.push_back(cast_cheap(i, p, static_cast<int>(set), rays[i]));
+            tally_cheap(p, 0, sets);
         });
     }
     std::uint64_t total = cache_.rays() - cache_rays;
@@ -501,6 +539,8 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
         if (sets == 0) return;
         std::vector<double> set_value(static_cast<std::size_t>(sets));
         std::array<double, kBatches> batch{}, batch_coarse{};
+        // With cheap rays: the batches' share of what the control variate reads of the field.
+        std::array<double, kBatches> controlled_batch{};
         double coarse = 0, fine_sum = 0, fine = 0;
         // Checked far hits' element average less the path beyond them: their sum, their squares'
         // sum and the sum's share of each batch (see GatheredPoint::depth_difference_squared).
@@ -527,8 +567,10 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
             }
         };
         // The field's light reflected at `side` toward the point; a near hit's, through the
-        // reflectance of the first surface (`first`, else none).
-        auto land = [&](int side, int first, double weight) -> double {
+        // reflectance of the first surface (`first`, else none). Its batch tallies go to
+        // `also` too, if given.
+        auto land = [&](int side, int first, double weight,
+                        std::array<double, kBatches>* also = nullptr) -> double {
             const int twin = sibling_side(side);
             const double a = area(side), b = area(twin);
             // Never 0/0, even for a sliver whose area rounds to nothing.
@@ -552,6 +594,7 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
             for (int q = 0; q < kBatches; ++q) {
                 const double f = weight * scale * field.batch_reflected(side, q);
                 batch[static_cast<std::size_t>(q)] += f;
+                if (also) (*also)[static_cast<std::size_t>(q)] += f;
                 batch_coarse[static_cast<std::size_t>(q)] +=
                     twin < 0 ? f : wa * f + wb * scale * field.batch_reflected(twin, q);
             }
@@ -574,8 +617,13 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
                     if (k < kRaysPerSet && checks_depth(k)) check_depth(code);
                 } else if (code <= -2) {
                     const NearHit& near = p.near[static_cast<std::size_t>(-2 - code)];
-                    if (near.second >= 0) controlled += land(near.second, near.first, weight);
+                    if (near.second >= 0)
+                        controlled += land(near.second, near.first, weight,
+                                           cheap ? &controlled_batch : nullptr);
                     controlled -= weight * reflected_lux[static_cast<std::size_t>(near.first)];
+                    for (int q = 0; q < kBatches && cheap; ++q)
+                        controlled_batch[static_cast<std::size_t>(q)] -=
+                            weight * field.batch_reflected(near.first, q);
                 }
             }
             fine_sum += fine;
@@ -607,8 +655,21 @@ std::vector<GatheredPoint> SensorGather::evaluate(const PhotonField& field) cons
             batch_coarse[qi] /= rays;
             difference[qi] = batch[qi] - batch_coarse[qi];
         }
-        g.photon_variance = sample_variance_of_mean(batch.data(), kBatches);
-        g.photon_batches = batch;
+        // With cheap rays the field reaches the point's value through them and the near hits'
+        // differences: its batches are read so. Read through the exact rays' few landings, each
+        // element's own noise counted as if the value read that few elements.
+        if (p.cheap > 0) {
+            const double share = kRaysPerSet / static_cast<double>(p.cheap);
+            for (const SideWeight& t : p.cheap_tally) {
+                for (int q = 0; q < kBatches; ++q)
+                    controlled_batch[static_cast<std::size_t>(q)] +=
+                        share * t.weight * field.batch_reflected(t.side, q);
+            }
+            for (double& v : controlled_batch) v /= rays;
+        }
+        const std::array<double, kBatches>& photon = p.cheap > 0 ? controlled_batch : batch;
+        g.photon_variance = sample_variance_of_mean(photon.data(), kBatches);
+        g.photon_batches = photon;
         const double d = (fine_sum - coarse) / rays;
         g.coarse_difference_squared = d * d;
         g.coarse_difference_variance = sample_variance_of_mean(difference.data(), kBatches);

@@ -132,6 +132,11 @@ private:
         float direct = 0;
         std::array<float, 3> through{};
     };
+    /// A side the cheap rays of a point landed on, and their weights summed over its sets.
+    struct SideWeight {
+        int side = 0;
+        float weight = 0;
+    };
     struct Point {
         /// Cheap rays per set (see ControlPilot): −1 until the pilot decides; from then on every
         /// set has them.
@@ -147,8 +152,12 @@ private:
         std::vector<double> set_cheap{};     ///< per set with cheap rays: their mean of the control
         std::vector<int> cheap_hits{};       ///< per cheap ray, set by set: its side, −1 for none
         std::vector<float> cheap_weights{};  ///< with aimed sides, per cheap ray: as `weights`
-        int pilot_sets = 0;                  ///< sets gathered before the pilot decided
-        double pilot_rays = 0;               ///< and the rays they cast
+        /// The cheap rays' landings over all sets, by side (ascending): what the photon field's
+        /// batches give the point is read through them, as its value is.
+        std::vector<SideWeight> cheap_tally{};
+        std::size_t cheap_tally_sets = 0;  ///< the sets in it
+        int pilot_sets = 0;                ///< sets gathered before the pilot decided
+        double pilot_rays = 0;             ///< and the rays they cast
         /// per ray, set by set: the side it landed on, −1 for none, or −2 − i for near[i]
         std::vector<int> hits{};
         std::vector<NearHit> near{};
@@ -180,6 +189,8 @@ private:
     void gather_point(std::size_t index, Point& point, int sets, std::uint64_t& rays) const;
     /// Set `set`'s cheap rays at a point that takes them: returns their mean of the control.
     double cast_cheap(std::size_t index, Point& point, int set, std::uint64_t& rays) const;
+    /// Adds the cheap rays of sets [from, to) to the point's tally.
+    static void tally_cheap(Point& point, std::size_t from, std::size_t to);
     /// The cheap rays a set casts for `cheap` cosine ones, with those aimed where it `aims`.
     static int cheap_rays(int cheap, bool aims) {
         return cheap <= 0 ? 0 : aims ? cheap + cheap / kAimsPerCosineRays : cheap;
