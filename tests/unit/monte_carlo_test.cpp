@@ -759,7 +759,8 @@ TEST(SensorGather, CheapRaysKeepTheMeanAndCutTheSpreadUnderATable) {
     Scene scene = testing::room_with_ceiling_panel(0.7, 1000);
     scene.surfaces.push_back(
         testing::box_surface("table", "wall", {1.4, 1.4, 0.7}, {2.6, 2.6, 0.75}, false));
-    scene.sensors.push_back(testing::sensor_points("under", {{2, 2, 0.3}}));
+    // Two points, so that their threads read the cache at once (the test runs under TSan).
+    scene.sensors.push_back(testing::sensor_points("under", {{2, 2, 0.3}, {2.2, 2, 0.3}}));
     const GatherSetup setup(scene, 0.25, 1 << 20);
     SensorGather plain = setup.gather(), cheap = setup.gather(), tight = setup.gather();
     const auto never = [] { return false; };
