@@ -685,6 +685,7 @@ Result Pipeline::run_monte_carlo(const PreparedSolve& input) {
             // control variate pays for take cheap rays, their sets so far included, and the
             // next round is budgeted on those sets' spread.
             stage_start = Clock::now();
+            report("gather", 0.5, rounds + 1, estimate_so_far(reported));
             bool cheapened = false;
             for (const auto& light : level->lights) {
                 if (done(*light)) continue;
