@@ -78,7 +78,7 @@ std::size_t SensorGather::bytes_per_set() const {
         cheap += p.cheap == 0 ? 0 : sizeof(double) + cheap_bytes(p.cheap, !p.aimed.empty());
         cheap_rays += static_cast<std::size_t>(p.cheap_rays_per_set());
         tallied += p.cheap_tally.size();
-        tallied_rays += p.cheap_tally_sets * static_cast<std::size_t>(p.cheap_rays_per_set());
+        tallied_rays += p.set_cheap.size() * static_cast<std::size_t>(p.cheap_rays_per_set());
     }
     // A tally grows by a side per cheap ray at most, and less as its sides repeat: at the share
     // seen so far.
@@ -191,7 +191,8 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
         point.cheap_hits.reserve(static_cast<std::size_t>(sets) * cheap_per_set);
         if (aims) point.cheap_weights.reserve(static_cast<std::size_t>(sets) * cheap_per_set);
     }
-    for (int set = static_cast<int>(point.set_direct.size()); set < sets; ++set) {
+    const std::size_t had = point.set_direct.size();
+    for (int set = static_cast<int>(had); set < sets; ++set) {
         const std::uint64_t rays_before = rays;
         SampleStream rng(seed_, stream_, index, static_cast<std::uint64_t>(set));
         // A kind that averages receiver normals draws the emitting surfaces' one per set, and
@@ -285,13 +286,10 @@ void SensorGather::gather_point(std::size_t index, Point& point, int sets,
         point.set_direct.push_back(direct + reflected / kRaysPerSet);
         if (point.cheap != 0) point.set_control.push_back(control / kRaysPerSet);
         if (point.cheap > 0) point.set_cheap.push_back(cast_cheap(index, point, set, rays));
-        if (point.cheap < 0) {
-            point.pilot_sets += 1;
-            point.pilot_rays += static_cast<double>(rays - rays_before);
-        }
+        if (point.cheap < 0) point.pilot_rays += static_cast<double>(rays - rays_before);
     }
-    if (point.cheap > 0 && point.cheap_tally_sets < point.set_cheap.size())
-        tally_cheap(point, point.cheap_tally_sets, point.set_cheap.size());
+    if (point.cheap > 0 && had < point.set_cheap.size())
+        tally_cheap(point, had, point.set_cheap.size());
 }
 
 void SensorGather::tally_cheap(Point& point, std::size_t from, std::size_t to) {
@@ -315,7 +313,6 @@ void SensorGather::tally_cheap(Point& point, std::size_t from, std::size_t to) {
         }
     }
     point.cheap_tally = std::move(tally);
-    point.cheap_tally_sets = to;
 }
 
 double SensorGather::cast_cheap(std::size_t index, Point& point, int set,
@@ -430,7 +427,7 @@ int SensorGather::pilot_choice(std::size_t first, std::size_t size) const {
         pilot.plain += n * sample_variance_of_mean(p.set_direct.data(), n);
         pilot.residual += n * sample_variance_of_mean(residual.data(), n);
         pilot.control += n * sample_variance_of_mean(p.set_control.data(), n);
-        pilot.sets += p.pilot_sets;
+        pilot.sets += n;  // undecided, every set it has is the pilot's
         pilot.rays += p.pilot_rays;
     }
     return pilot.sets > 0 ? cheap_rays_per_set(pilot, kRaysPerSet) : -1;

@@ -155,9 +155,7 @@ private:
         /// The cheap rays' landings over all sets, by side (ascending): what the photon field's
         /// batches give the point is read through them, as its value is.
         std::vector<SideWeight> cheap_tally{};
-        std::size_t cheap_tally_sets = 0;  ///< the sets in it
-        int pilot_sets = 0;                ///< sets gathered before the pilot decided
-        double pilot_rays = 0;             ///< and the rays they cast
+        double pilot_rays = 0;  ///< what the sets gathered before the pilot decided cast
         /// per ray, set by set: the side it landed on, −1 for none, or −2 − i for near[i]
         std::vector<int> hits{};
         std::vector<NearHit> near{};
