@@ -33,22 +33,6 @@ Scene panel_room_with_sensors() {
     return scene;
 }
 
-// The scene's first sensor point, gathered with `sets` ray sets over `photons` photons on
-// elements of edge `edge` (m).
-GatheredPoint first_point(const PreparedScene& prepared, double edge, std::size_t photons,
-                          int sets) {
-    const auto never = [] { return false; };
-    const ElementMesh mesh(prepared, {edge});
-    const std::unique_ptr<Visibility> visibility = make_embree_visibility(mesh.triangles());
-    const LightSources sources(prepared, visibility->epsilon());
-    PhotonField field(prepared, mesh, 5);
-    field.trace(photons, sources, *visibility, never);
-    const SideDirectCache cache(prepared, mesh, sources, *visibility, 7);
-    SensorGather gather(prepared, mesh, sources, cache, *visibility, 7);
-    gather.gather(sets, never);
-    return gather.evaluate(field).at(0);
-}
-
 // What a gather needs: a scene's mesh of edge `edge`, its ray tracer, its sources, a photon field
 // of `photons` and the direct-light cache.
 struct GatherSetup {
@@ -70,6 +54,15 @@ struct GatherSetup {
     PhotonField field;
     SideDirectCache cache;
 };
+
+// The scene's first sensor point, gathered with `sets` ray sets over `photons` photons on
+// elements of edge `edge` (m).
+GatheredPoint first_point(const Scene& scene, double edge, std::size_t photons, int sets) {
+    const GatherSetup setup(scene, edge, photons);
+    SensorGather gather = setup.gather();
+    gather.gather(sets, [] { return false; });
+    return gather.evaluate(setup.field).at(0);
+}
 
 double rms_relative_error(const std::vector<double>& values, const std::vector<double>& exact) {
     double sum = 0, mean = 0;
@@ -673,9 +666,8 @@ TEST(SensorGather, APointBesideASurfaceReadsTheLightOfThatSpot) {
                                  testing::rect({0, -0.5, 0}, {1, 0, 0}, {0, 1, 0})),
         testing::polygon_surface("panel", "panel", testing::ceiling_rect(0, 1, -0.5, 0.5, 2))};
     scene.sensors.push_back(testing::sensor_points("beside", {{0.003, 0, 0.05}}));
-    const PreparedScene prepared = prepare_scene(scene);
-    const GatheredPoint coarse = first_point(prepared, 1.5, 1 << 22, 256);
-    const GatheredPoint fine = first_point(prepared, 0.05, 1 << 22, 256);
+    const GatheredPoint coarse = first_point(scene, 1.5, 1 << 22, 256);
+    const GatheredPoint fine = first_point(scene, 0.05, 1 << 22, 256);
     const double spread = std::sqrt(coarse.gather_variance + coarse.photon_variance +
                                     fine.gather_variance + fine.photon_variance);
     EXPECT_LT(spread, 0.01 * fine.illuminance);
@@ -696,9 +688,8 @@ TEST(SensorGather, TheDepthCheckMeasuresWhatAnElementAverageMisses) {
         testing::polygon_surface("floor", "wall", testing::rect({0, 0, 0}, {1, 0, 0}, {0, 2, 0})),
         testing::polygon_surface("panel", "panel", testing::ceiling_rect(0, 1, 0.5, 1.5, 2))};
     scene.sensors.push_back(testing::sensor_points("front", {{0.5, 0.8, 0.75}}, {0, -1, 0}));
-    const PreparedScene prepared = prepare_scene(scene);
-    const GatheredPoint coarse = first_point(prepared, 1.5, 1 << 23, 1024);
-    const GatheredPoint fine = first_point(prepared, 0.05, 1 << 23, 1024);
+    const GatheredPoint coarse = first_point(scene, 1.5, 1 << 23, 1024);
+    const GatheredPoint fine = first_point(scene, 0.05, 1 << 23, 1024);
     // Read whole, the board is 1.9 % darker than with 5 cm elements; the check finds about 70 %
     // of that, well beyond its noise, and nothing beyond its noise with 5 cm elements.
     const double gap = std::abs(fine.illuminance - coarse.illuminance);
