@@ -169,9 +169,6 @@ bool usable_reference(const nlohmann::json& solve, double max_seconds) {
 // rows' (seed 1).
 constexpr std::uint64_t kReferenceSeed = 1000003;
 
-// The converged answer of a generated or user's scene: from the cache (one per method), or a
-// solve with `method` at `tolerance` (in a child, so its memory does not inflate the later
-// cases' peaks).
 // A cached reference becomes the scene's, and says so on stderr.
 void adopt_reference(BenchScene& bench, std::string source, CachedReference cached) {
     bench.reference.source = std::move(source);
@@ -182,6 +179,9 @@ void adopt_reference(BenchScene& bench, std::string source, CachedReference cach
               << cached.error_estimate << '\n';
 }
 
+// The converged answer of a generated or user's scene: from the cache (one per method), or a
+// solve with `method` at `tolerance` (in a child, so its memory does not inflate the later
+// cases' peaks).
 bool prepare_reference(BenchScene& bench, const std::string& method, double tolerance,
                        double max_seconds, int threads, const ReferenceCache& cache) {
     auto cached = cache.find(bench.scene, tolerance);
